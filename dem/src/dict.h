@@ -1,0 +1,76 @@
+/* OpenFOAM-syntax dictionary reader (constant/demProperties, couplingProperties).
+ *
+ * Syntax: `key value...;` entries and `key { ... }` sub-dictionaries, `//` and `/* *\/`
+ * comments, vectors/lists in `( ... )` (optionally with a leading count, `3(1 2 3)`),
+ * double-quoted strings, and `#include "file"` (path relative to the including file).
+ * A `FoamFile { }` header is accepted and ignored.
+ *
+ * Every error is fatal: it prints "<file>:<line>: error: ... key '<key>' ..." to stderr
+ * and exits with status 1 (see dem_fatal in error.h). Every accessor records the key it
+ * was asked for, found or not; dict_check_unused() then reports a key that nobody read
+ * as unknown and suggests the nearest key that was asked for (edit distance).
+ */
+#ifndef DEM_DICT_H
+#define DEM_DICT_H
+
+#include <stddef.h>
+
+typedef struct dict dict;
+
+dict *dict_read(const char *path);            /* fatal on I/O or syntax error */
+void dict_free(dict *d);
+
+const char *dict_path(const dict *d);          /* file the dictionary (or key) came from */
+const char *dict_name(const dict *d);          /* "demProperties", or the sub-dictionary's key */
+int dict_line(const dict *d);                  /* line of the opening brace (1 for the file) */
+int dict_key_line(const dict *d, const char *key); /* line of key, or dict_line(d) if absent */
+
+/* Presence and iteration (in file order). */
+int dict_has(const dict *d, const char *key);
+int dict_size(const dict *d);
+const char *dict_key_at(const dict *d, int i);
+int dict_is_dict_at(const dict *d, int i);
+dict *dict_dict_at(const dict *d, int i);       /* marks the entry used */
+
+/* Sub-dictionaries. */
+dict *dict_sub(const dict *d, const char *key);       /* fatal if missing or not a dict */
+dict *dict_sub_opt(const dict *d, const char *key);   /* NULL if missing */
+
+/* Scalars with a range check [lo, hi] (fatal outside; message names file, line, key, range). */
+double dict_scalar(const dict *d, const char *key, double lo, double hi);
+double dict_scalar_opt(const dict *d, const char *key, double def, double lo, double hi);
+long dict_label(const dict *d, const char *key, long lo, long hi);
+long dict_label_opt(const dict *d, const char *key, long def, long lo, long hi);
+
+/* true/false, yes/no, on/off. */
+int dict_bool_opt(const dict *d, const char *key, int def);
+
+/* Vectors: exactly three numbers in parentheses. */
+void dict_vector(const dict *d, const char *key, double out[3]);
+void dict_vector_opt(const dict *d, const char *key, double out[3], const double def[3]);
+/* Three booleans in parentheses, e.g. periodic (false false true). */
+void dict_bools3_opt(const dict *d, const char *key, int out[3], int def);
+
+/* Words. dict_choice returns the index in options[] (NULL-terminated); anything else is
+ * fatal and the message lists the options and the nearest one. */
+const char *dict_word(const dict *d, const char *key);
+const char *dict_word_opt(const dict *d, const char *key, const char *def);
+int dict_choice(const dict *d, const char *key, const char *const options[]);
+int dict_choice_opt(const dict *d, const char *key, const char *const options[], int def);
+
+/* List of numbers `(a b c ...)`; returns the count, *out malloc'd (caller frees). */
+int dict_scalar_list(const dict *d, const char *key, double **out);
+/* List of vectors `((x y z) (x y z) ...)`; returns the count, *out malloc'd as 3*count doubles. */
+int dict_vector_list(const dict *d, const char *key, double **out);
+
+/* Report the first key (recursively, in sub-dictionaries) that no accessor asked for. */
+void dict_check_unused(const dict *d);
+
+/* Fatal error about `key` in d, with file and line: "<file>:<line>: error: key '<key>': <msg>". */
+void dict_fatal(const dict *d, const char *key, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4), noreturn));
+/* Same, at the line of the dictionary itself. */
+void dict_fatal_here(const dict *d, const char *fmt, ...)
+    __attribute__((format(printf, 2, 3), noreturn));
+
+#endif
