@@ -1,0 +1,526 @@
+/* Particle output and restart in HDF5 with an XDMF index; layout described in io.h.
+ *
+ * Serial for now: the file is opened with the default (sec2) driver. The parallel HDF5 build
+ * works without MPI_Init in that case (checked with HDF5 1.10.8 / Open MPI on Debian 12), so
+ * no MPI call is made here. The file access property list is made in one place
+ * (make_fapl), which is where an MPI-IO driver would be selected later.
+ *
+ * Every HDF5 call is checked; HDF5's own error printing is switched off and a failure ends the
+ * program through dem_fatal with the file name and the innermost HDF5 message. */
+#include <errno.h>
+#include <inttypes.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <hdf5.h>
+
+#include "error.h"
+#include "io.h"
+
+typedef struct snapshot_info {
+    long index;        /* group /snapshots/<index> */
+    double time;
+    long step;
+    int64_t n;
+} snapshot_info;
+
+struct particle_writer {
+    hid_t file;
+    char *h5_path;     /* <base>.h5 as given, for messages and opening */
+    char *h5_name;     /* file name of the .h5 without directories, used inside the .xdmf */
+    char *xdmf_path;   /* <base>.xdmf */
+    long next_index;   /* number of the next snapshot group */
+    snapshot_info *snaps; /* complete snapshots, in index order */
+    int nsnaps, capsnaps;
+};
+
+/* ---------------------------------------------------------------- error handling */
+
+typedef struct h5_err_detail {
+    char api[64];      /* outermost function (the API call) */
+    char inner[384];   /* innermost description */
+} h5_err_detail;
+
+static herr_t walk_errors(unsigned n, const H5E_error2_t *e, void *data)
+{
+    h5_err_detail *d = data;
+    if (n == 0 && e->func_name) snprintf(d->api, sizeof d->api, "%s", e->func_name);
+    if (e->desc) snprintf(d->inner, sizeof d->inner, "%s", e->desc);
+    return 0;
+}
+
+static void h5_quiet(void)
+{
+    static int done = 0;
+    if (!done) {
+        H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
+        done = 1;
+    }
+}
+
+__attribute__((noreturn)) static void h5_fail(const char *path, const char *what)
+{
+    h5_err_detail d = {"", ""};
+    H5Ewalk2(H5E_DEFAULT, H5E_WALK_DOWNWARD, walk_errors, &d);
+    H5Eclear2(H5E_DEFAULT);
+    if (d.api[0] || d.inner[0])
+        dem_fatal("HDF5 file '%s': %s (%s%s%s)", path, what, d.api, d.api[0] ? ": " : "",
+                  d.inner);
+    dem_fatal("HDF5 file '%s': %s", path, what);
+}
+
+/* Check the result of an HDF5 call (hid_t or herr_t); negative means failure. */
+static hid_t chk(hid_t r, const char *path, const char *what)
+{
+    if (r < 0) h5_fail(path, what);
+    return r;
+}
+
+/* ---------------------------------------------------------------- small helpers */
+
+static char *str_dup(const char *s)
+{
+    size_t len = strlen(s) + 1;
+    char *c = dem_malloc(len);
+    memcpy(c, s, len);
+    return c;
+}
+
+static char *str_cat(const char *a, const char *b)
+{
+    size_t la = strlen(a), lb = strlen(b);
+    char *c = dem_malloc(la + lb + 1);
+    memcpy(c, a, la);
+    memcpy(c + la, b, lb + 1);
+    return c;
+}
+
+static const char *file_name_part(const char *path)
+{
+    const char *slash = strrchr(path, '/');
+    return slash ? slash + 1 : path;
+}
+
+/* The one place where the file access property list is made (MPI-IO goes here later). */
+static hid_t make_fapl(const char *path)
+{
+    hid_t fapl = chk(H5Pcreate(H5P_FILE_ACCESS), path, "cannot create file access list");
+#if H5_VERSION_GE(1, 10, 7)
+    /* Keep file locking, but do not fail on file systems without lock support. */
+    chk(H5Pset_file_locking(fapl, 1, 1), path, "cannot set file locking");
+#endif
+    return fapl;
+}
+
+static void snapshot_name(char *buf, size_t size, long index)
+{
+    snprintf(buf, size, "%06ld", index);
+}
+
+/* Parse a group name made of decimal digits only; -1 otherwise. */
+static long parse_index(const char *name)
+{
+    if (!name[0]) return -1;
+    long v = 0;
+    for (const char *c = name; *c; c++) {
+        if (*c < '0' || *c > '9' || v > 100000000L) return -1;
+        v = 10 * v + (*c - '0');
+    }
+    return v;
+}
+
+static void write_string_attr(hid_t obj, const char *name, const char *value, const char *path)
+{
+    hid_t type = chk(H5Tcopy(H5T_C_S1), path, "cannot copy string type");
+    chk(H5Tset_size(type, strlen(value) + 1), path, "cannot size string type");
+    chk(H5Tset_strpad(type, H5T_STR_NULLTERM), path, "cannot set string padding");
+    hid_t space = chk(H5Screate(H5S_SCALAR), path, "cannot create scalar dataspace");
+    hid_t attr = chk(H5Acreate2(obj, name, type, space, H5P_DEFAULT, H5P_DEFAULT), path,
+                     "cannot create string attribute");
+    chk(H5Awrite(attr, type, value), path, "cannot write string attribute");
+    H5Aclose(attr);
+    H5Sclose(space);
+    H5Tclose(type);
+}
+
+static void write_scalar_attr(hid_t obj, const char *name, hid_t file_type, hid_t mem_type,
+                              const void *value, const char *path)
+{
+    hid_t space = chk(H5Screate(H5S_SCALAR), path, "cannot create scalar dataspace");
+    hid_t attr = chk(H5Acreate2(obj, name, file_type, space, H5P_DEFAULT, H5P_DEFAULT), path,
+                     "cannot create attribute");
+    chk(H5Awrite(attr, mem_type, value), path, "cannot write attribute");
+    H5Aclose(attr);
+    H5Sclose(space);
+}
+
+/* Read a scalar attribute; returns 0 when it does not exist. */
+static int read_scalar_attr(hid_t obj, const char *name, hid_t mem_type, void *value,
+                            const char *path)
+{
+    htri_t has = chk(H5Aexists(obj, name), path, "cannot query attribute");
+    if (!has) return 0;
+    hid_t attr = chk(H5Aopen(obj, name, H5P_DEFAULT), path, "cannot open attribute");
+    hid_t space = chk(H5Aget_space(attr), path, "cannot get attribute dataspace");
+    hssize_t count = H5Sget_simple_extent_npoints(space);
+    if (count != 1) {
+        H5Sclose(space);
+        H5Aclose(attr);
+        dem_fatal("HDF5 file '%s': attribute '%s' is not a scalar", path, name);
+    }
+    chk(H5Aread(attr, mem_type, value), path, "cannot read attribute");
+    H5Sclose(space);
+    H5Aclose(attr);
+    return 1;
+}
+
+/* ---------------------------------------------------------------- snapshot listing */
+
+typedef struct scan_state {
+    const char *path;
+    snapshot_info *complete; /* complete snapshots found */
+    int ncomplete, capcomplete;
+    long *incomplete;        /* indices of groups without `complete` */
+    int nincomplete, capincomplete;
+} scan_state;
+
+static herr_t scan_link(hid_t group, const char *name, const H5L_info_t *info, void *data)
+{
+    scan_state *s = data;
+    long index = parse_index(name);
+    if (index < 0) return 0;   /* not ours; leave it alone */
+    if (info->type != H5L_TYPE_HARD) return 0;
+    hid_t g = chk(H5Oopen(group, name, H5P_DEFAULT), s->path, "cannot open snapshot group");
+    if (H5Iget_type(g) != H5I_GROUP) {
+        H5Oclose(g);
+        return 0;
+    }
+    int complete = 0;
+    int ok = read_scalar_attr(g, "complete", H5T_NATIVE_INT, &complete, s->path) && complete;
+    snapshot_info si = {index, 0.0, 0, 0};
+    if (ok) {
+        long long step = 0;
+        ok = read_scalar_attr(g, "time", H5T_NATIVE_DOUBLE, &si.time, s->path) &&
+             read_scalar_attr(g, "step", H5T_NATIVE_LLONG, &step, s->path) &&
+             read_scalar_attr(g, "n", H5T_NATIVE_INT64, &si.n, s->path);
+        si.step = (long)step;
+    }
+    H5Oclose(g);
+    if (ok) {
+        if (s->ncomplete == s->capcomplete) {
+            s->capcomplete = s->capcomplete ? 2 * s->capcomplete : 16;
+            s->complete = dem_realloc(s->complete, (size_t)s->capcomplete * sizeof *s->complete);
+        }
+        s->complete[s->ncomplete++] = si;
+    } else {
+        if (s->nincomplete == s->capincomplete) {
+            s->capincomplete = s->capincomplete ? 2 * s->capincomplete : 4;
+            s->incomplete = dem_realloc(s->incomplete,
+                                        (size_t)s->capincomplete * sizeof *s->incomplete);
+        }
+        s->incomplete[s->nincomplete++] = index;
+    }
+    return 0;
+}
+
+static int cmp_snap(const void *a, const void *b)
+{
+    long ia = ((const snapshot_info *)a)->index, ib = ((const snapshot_info *)b)->index;
+    return (ia > ib) - (ia < ib);
+}
+
+/* List the snapshot groups of an open file (no /snapshots group: nothing found). */
+static void scan_snapshots(hid_t file, const char *path, scan_state *s)
+{
+    memset(s, 0, sizeof *s);
+    s->path = path;
+    htri_t has = chk(H5Lexists(file, "snapshots", H5P_DEFAULT), path, "cannot query /snapshots");
+    if (!has) return;
+    hid_t g = chk(H5Gopen2(file, "snapshots", H5P_DEFAULT), path, "cannot open /snapshots");
+    hsize_t idx = 0;
+    chk(H5Literate(g, H5_INDEX_NAME, H5_ITER_INC, &idx, scan_link, s), path,
+        "cannot list /snapshots");
+    H5Gclose(g);
+    if (s->ncomplete > 1) qsort(s->complete, (size_t)s->ncomplete, sizeof *s->complete, cmp_snap);
+}
+
+/* ---------------------------------------------------------------- XDMF */
+
+static void xml_escape(FILE *f, const char *s)
+{
+    for (; *s; s++) {
+        switch (*s) {
+        case '&': fputs("&amp;", f); break;
+        case '<': fputs("&lt;", f); break;
+        case '>': fputs("&gt;", f); break;
+        case '"': fputs("&quot;", f); break;
+        case '\'': fputs("&apos;", f); break;
+        default: fputc(*s, f);
+        }
+    }
+}
+
+static void xdmf_item(FILE *f, const particle_writer *w, const char *group, const char *dset,
+                      int64_t n, int vec, const char *number_type, int precision)
+{
+    fprintf(f, "     <DataItem Format=\"HDF\" NumberType=\"%s\" Precision=\"%d\" "
+               "Dimensions=\"%" PRId64 "%s\">",
+            number_type, precision, n, vec ? " 3" : "");
+    xml_escape(f, w->h5_name);
+    fprintf(f, ":/snapshots/%s/%s</DataItem>\n", group, dset);
+}
+
+static void xdmf_attribute(FILE *f, const particle_writer *w, const char *group,
+                           const char *name, int64_t n, int vec, const char *number_type,
+                           int precision)
+{
+    fprintf(f, "    <Attribute Name=\"%s\" AttributeType=\"%s\" Center=\"Node\">\n", name,
+            vec ? "Vector" : "Scalar");
+    xdmf_item(f, w, group, name, n, vec, number_type, precision);
+    fputs("    </Attribute>\n", f);
+}
+
+/* Rewrite <base>.xdmf through a temporary file and rename, so it is never half written.
+ * Snapshots with no particles are left out (zero-sized data items upset readers). */
+static void write_xdmf(const particle_writer *w)
+{
+    char *tmp = str_cat(w->xdmf_path, ".tmp");
+    FILE *f = fopen(tmp, "w");
+    if (!f) dem_fatal("cannot write '%s': %s", tmp, strerror(errno));
+    fputs("<?xml version=\"1.0\" ?>\n"
+          "<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n"
+          "<Xdmf Version=\"2.0\">\n"
+          " <Domain>\n"
+          "  <Grid Name=\"particles\" GridType=\"Collection\" CollectionType=\"Temporal\">\n",
+          f);
+    for (int k = 0; k < w->nsnaps; k++) {
+        const snapshot_info *s = &w->snaps[k];
+        if (s->n <= 0) continue;
+        char group[32];
+        snapshot_name(group, sizeof group, s->index);
+        fprintf(f, "   <Grid Name=\"%s\" GridType=\"Uniform\">\n", group);
+        fprintf(f, "    <Time Value=\"%.17g\"/>\n", s->time);
+        fprintf(f, "    <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"%" PRId64
+                   "\" NodesPerElement=\"1\"/>\n",
+                s->n);
+        fputs("    <Geometry GeometryType=\"XYZ\">\n", f);
+        xdmf_item(f, w, group, "position", s->n, 1, "Float", 8);
+        fputs("    </Geometry>\n", f);
+        xdmf_attribute(f, w, group, "velocity", s->n, 1, "Float", 8);
+        xdmf_attribute(f, w, group, "omega", s->n, 1, "Float", 8);
+        xdmf_attribute(f, w, group, "force", s->n, 1, "Float", 8);
+        xdmf_attribute(f, w, group, "radius", s->n, 0, "Float", 8);
+        xdmf_attribute(f, w, group, "id", s->n, 0, "Int", 8);
+        xdmf_attribute(f, w, group, "type", s->n, 0, "Int", 4);
+        fputs("   </Grid>\n", f);
+    }
+    fputs("  </Grid>\n </Domain>\n</Xdmf>\n", f);
+    if (ferror(f) | fclose(f)) dem_fatal("cannot write '%s': %s", tmp, strerror(errno));
+    if (rename(tmp, w->xdmf_path) != 0)
+        dem_fatal("cannot rename '%s' to '%s': %s", tmp, w->xdmf_path, strerror(errno));
+    free(tmp);
+}
+
+/* ---------------------------------------------------------------- writer */
+
+static hid_t create_file(const char *path)
+{
+    hid_t fapl = make_fapl(path);
+    hid_t file = chk(H5Fcreate(path, H5F_ACC_TRUNC, H5P_DEFAULT, fapl), path,
+                     "cannot create file");
+    H5Pclose(fapl);
+    return file;
+}
+
+particle_writer *io_open_writer(const char *base, int append)
+{
+    h5_quiet();
+    particle_writer *w = dem_calloc(1, sizeof *w);
+    w->h5_path = str_cat(base, ".h5");
+    w->xdmf_path = str_cat(base, ".xdmf");
+    w->h5_name = str_dup(file_name_part(w->h5_path));
+    w->file = -1;
+
+    FILE *probe = append ? fopen(w->h5_path, "rb") : NULL;
+    if (probe) {
+        fclose(probe);
+        hid_t fapl = make_fapl(w->h5_path);
+        w->file = chk(H5Fopen(w->h5_path, H5F_ACC_RDWR, fapl), w->h5_path,
+                      "cannot open file to append snapshots");
+        H5Pclose(fapl);
+        scan_state s;
+        scan_snapshots(w->file, w->h5_path, &s);
+        w->snaps = s.complete;
+        w->nsnaps = w->capsnaps = s.ncomplete;
+        w->next_index = s.ncomplete ? s.complete[s.ncomplete - 1].index + 1 : 0;
+        /* Groups left without `complete` by a killed run are removed (their space is not
+         * reclaimed by HDF5, but they would otherwise block or confuse the numbering). */
+        if (s.nincomplete) {
+            hid_t g = chk(H5Gopen2(w->file, "snapshots", H5P_DEFAULT), w->h5_path,
+                          "cannot open /snapshots");
+            for (int k = 0; k < s.nincomplete; k++) {
+                char name[32];
+                snapshot_name(name, sizeof name, s.incomplete[k]);
+                htri_t has = chk(H5Lexists(g, name, H5P_DEFAULT), w->h5_path,
+                                 "cannot query snapshot group");
+                if (has)
+                    chk(H5Ldelete(g, name, H5P_DEFAULT), w->h5_path,
+                        "cannot delete incomplete snapshot group");
+            }
+            H5Gclose(g);
+        }
+        free(s.incomplete);
+        htri_t has = chk(H5Lexists(w->file, "snapshots", H5P_DEFAULT), w->h5_path,
+                         "cannot query /snapshots");
+        if (!has)
+            H5Gclose(chk(H5Gcreate2(w->file, "snapshots", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+                         w->h5_path, "cannot create /snapshots"));
+        chk(H5Fflush(w->file, H5F_SCOPE_LOCAL), w->h5_path, "cannot flush file");
+    } else {
+        w->file = create_file(w->h5_path);
+        H5Gclose(chk(H5Gcreate2(w->file, "snapshots", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+                     w->h5_path, "cannot create /snapshots"));
+        chk(H5Fflush(w->file, H5F_SCOPE_LOCAL), w->h5_path, "cannot flush file");
+    }
+    write_xdmf(w);
+    return w;
+}
+
+static void write_dataset(hid_t group, const char *name, hid_t file_type, hid_t mem_type,
+                          const void *data, int64_t n, int vec, const char *units,
+                          const char *path)
+{
+    hsize_t dims[2] = {(hsize_t)n, 3};
+    hid_t space = chk(H5Screate_simple(vec ? 2 : 1, dims, NULL), path, "cannot create dataspace");
+    hid_t dset = chk(H5Dcreate2(group, name, file_type, space, H5P_DEFAULT, H5P_DEFAULT,
+                                H5P_DEFAULT),
+                     path, "cannot create dataset");
+    if (n > 0)
+        chk(H5Dwrite(dset, mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), path,
+            "cannot write dataset");
+    if (units) write_string_attr(dset, "units", units, path);
+    H5Dclose(dset);
+    H5Sclose(space);
+}
+
+void io_write_snapshot(particle_writer *w, const particles *p, double time, long step)
+{
+    const char *path = w->h5_path;
+    char name[32];
+    snapshot_name(name, sizeof name, w->next_index);
+    hid_t snaps = chk(H5Gopen2(w->file, "snapshots", H5P_DEFAULT), path, "cannot open /snapshots");
+    htri_t has = chk(H5Lexists(snaps, name, H5P_DEFAULT), path, "cannot query snapshot group");
+    if (has) chk(H5Ldelete(snaps, name, H5P_DEFAULT), path, "cannot replace snapshot group");
+    hid_t g = chk(H5Gcreate2(snaps, name, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), path,
+                  "cannot create snapshot group");
+
+    const int64_t n = p->n;
+    write_dataset(g, "position", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, p->x, n, 1, "m", path);
+    write_dataset(g, "velocity", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, p->v, n, 1, "m/s", path);
+    write_dataset(g, "omega", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, p->omega, n, 1, "rad/s", path);
+    write_dataset(g, "force", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, p->f, n, 1, "N", path);
+    write_dataset(g, "radius", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, p->radius, n, 0, "m", path);
+    write_dataset(g, "id", H5T_STD_I64LE, H5T_NATIVE_INT64, p->id, n, 0, NULL, path);
+    write_dataset(g, "type", H5T_STD_I32LE, H5T_NATIVE_INT, p->type, n, 0, NULL, path);
+
+    const long long step_ll = step;
+    write_scalar_attr(g, "time", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &time, path);
+    write_string_attr(g, "time_units", "s", path);
+    write_scalar_attr(g, "step", H5T_STD_I64LE, H5T_NATIVE_LLONG, &step_ll, path);
+    write_scalar_attr(g, "n", H5T_STD_I64LE, H5T_NATIVE_INT64, &n, path);
+    /* Data on disk first, then the mark that says it is all there. */
+    chk(H5Fflush(w->file, H5F_SCOPE_LOCAL), path, "cannot flush file");
+    const int one = 1;
+    write_scalar_attr(g, "complete", H5T_STD_I32LE, H5T_NATIVE_INT, &one, path);
+    H5Gclose(g);
+    H5Gclose(snaps);
+    chk(H5Fflush(w->file, H5F_SCOPE_LOCAL), path, "cannot flush file");
+
+    if (w->nsnaps == w->capsnaps) {
+        w->capsnaps = w->capsnaps ? 2 * w->capsnaps : 16;
+        w->snaps = dem_realloc(w->snaps, (size_t)w->capsnaps * sizeof *w->snaps);
+    }
+    w->snaps[w->nsnaps++] = (snapshot_info){w->next_index, time, step, n};
+    w->next_index++;
+    write_xdmf(w);
+}
+
+void io_close_writer(particle_writer *w)
+{
+    if (!w) return;
+    if (w->file >= 0) chk(H5Fclose(w->file), w->h5_path, "cannot close file");
+    free(w->snaps);
+    free(w->h5_path);
+    free(w->h5_name);
+    free(w->xdmf_path);
+    free(w);
+}
+
+/* ---------------------------------------------------------------- reader */
+
+static void read_dataset(hid_t group, const char *name, hid_t mem_type, void *data, int64_t n,
+                         int vec, const char *path)
+{
+    hid_t dset = chk(H5Dopen2(group, name, H5P_DEFAULT), path, "cannot open dataset");
+    hid_t space = chk(H5Dget_space(dset), path, "cannot get dataset dataspace");
+    int rank = chk(H5Sget_simple_extent_ndims(space), path, "cannot get dataset rank");
+    hsize_t dims[2] = {0, 0};
+    if (rank == (vec ? 2 : 1)) H5Sget_simple_extent_dims(space, dims, NULL);
+    if (rank != (vec ? 2 : 1) || dims[0] != (hsize_t)n || (vec && dims[1] != 3))
+        dem_fatal("HDF5 file '%s': dataset '%s' has the wrong shape (expected %" PRId64 "%s)",
+                  path, name, n, vec ? " x 3" : "");
+    if (n > 0)
+        chk(H5Dread(dset, mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), path,
+            "cannot read dataset");
+    H5Sclose(space);
+    H5Dclose(dset);
+}
+
+int io_read_last_snapshot(const char *base, particles *p, double *time, long *step)
+{
+    h5_quiet();
+    char *path = str_cat(base, ".h5");
+    hid_t fapl = make_fapl(path);
+    hid_t file = chk(H5Fopen(path, H5F_ACC_RDONLY, fapl), path, "cannot open file for reading");
+    H5Pclose(fapl);
+
+    scan_state s;
+    scan_snapshots(file, path, &s);
+    free(s.incomplete);
+    if (s.ncomplete == 0) {
+        free(s.complete);
+        chk(H5Fclose(file), path, "cannot close file");
+        free(path);
+        return -1;
+    }
+    const snapshot_info last = s.complete[s.ncomplete - 1];
+    free(s.complete);
+    if (last.n < 0 || last.n > INT32_MAX)
+        dem_fatal("HDF5 file '%s': snapshot %06ld has an invalid particle count %" PRId64, path,
+                  last.index, last.n);
+
+    char name[64];
+    snprintf(name, sizeof name, "snapshots/%06ld", last.index);
+    hid_t g = chk(H5Gopen2(file, name, H5P_DEFAULT), path, "cannot open snapshot group");
+    const int n = (int)last.n;
+    particles_reserve(p, n);
+    p->n = n;
+    read_dataset(g, "position", H5T_NATIVE_DOUBLE, p->x, n, 1, path);
+    read_dataset(g, "velocity", H5T_NATIVE_DOUBLE, p->v, n, 1, path);
+    read_dataset(g, "omega", H5T_NATIVE_DOUBLE, p->omega, n, 1, path);
+    read_dataset(g, "radius", H5T_NATIVE_DOUBLE, p->radius, n, 0, path);
+    read_dataset(g, "id", H5T_NATIVE_INT64, p->id, n, 0, path);
+    read_dataset(g, "type", H5T_NATIVE_INT, p->type, n, 0, path);
+    if (n > 0) {
+        memset(p->f, 0, (size_t)n * sizeof *p->f);
+        memset(p->torque, 0, (size_t)n * sizeof *p->torque);
+        memset(p->f_ext, 0, (size_t)n * sizeof *p->f_ext);
+    }
+    H5Gclose(g);
+    chk(H5Fclose(file), path, "cannot close file");
+    free(path);
+    if (time) *time = last.time;
+    if (step) *step = last.step;
+    return 0;
+}
