@@ -1,6 +1,6 @@
 /* OpenFOAM-syntax dictionary reader (constant/demProperties, couplingProperties).
  *
- * Syntax: `key value...;` entries and `key { ... }` sub-dictionaries, `//` and `/* *\/`
+ * Syntax: `key value...;` entries and `key { ... }` sub-dictionaries, `//` and block
  * comments, vectors/lists in `( ... )` (optionally with a leading count, `3(1 2 3)`),
  * double-quoted strings, and `#include "file"` (path relative to the including file).
  * A `FoamFile { }` header is accepted and ignored.

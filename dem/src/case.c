@@ -1,0 +1,311 @@
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "case.h"
+#include "dict.h"
+#include "error.h"
+#include "insert.h"
+
+static const char *const axis_names[] = {"x", "y", "z", 0};
+
+static void read_domain(const dict *root, dem_system *s)
+{
+    const dict *d = dict_sub(root, "domain");
+    dict_vector(d, "min", s->domain_min);
+    dict_vector(d, "max", s->domain_max);
+    dict_bools3_opt(d, "periodic", s->periodic, 0);
+    for (int k = 0; k < 3; k++)
+        if (!(s->domain_max[k] > s->domain_min[k]))
+            dict_fatal(d, "max", "max must exceed min in every direction (%c: min %g, max %g)",
+                       "xyz"[k], s->domain_min[k], s->domain_max[k]);
+}
+
+static void read_materials(const dict *root, dem_system *s)
+{
+    const dict *d = dict_sub(root, "materials");
+    material_table *t = &s->materials;
+    for (int i = 0; i < dict_size(d); i++) {
+        if (!dict_is_dict_at(d, i)) dict_fatal(d, dict_key_at(d, i), "a material is a sub-dictionary { youngsModulus; poissonsRatio; density; }");
+        if (t->ntypes == DEM_MAX_TYPES) dict_fatal(d, dict_key_at(d, i), "at most %d materials", DEM_MAX_TYPES);
+        const dict *m = dict_dict_at(d, i);
+        material *mat = &t->mat[t->ntypes++];
+        snprintf(mat->name, sizeof mat->name, "%s", dict_key_at(d, i));
+        mat->youngs_modulus = dict_scalar(m, "youngsModulus", 1e3, 1e13);
+        mat->poisson_ratio = dict_scalar(m, "poissonsRatio", 0.0, 0.4999);
+        mat->density = dict_scalar(m, "density", 1.0, 1e5);
+    }
+    if (t->ntypes == 0) dict_fatal_here(d, "define at least one material");
+}
+
+/* "a-b" -> two material indices (names may themselves contain '-'). */
+static int split_pair(const material_table *t, const char *key, int *a, int *b)
+{
+    char buf[2 * DEM_NAME_LEN + 2];
+    for (const char *dash = strchr(key, '-'); dash; dash = strchr(dash + 1, '-')) {
+        const size_t len = (size_t)(dash - key);
+        if (len >= sizeof buf) break;
+        memcpy(buf, key, len);
+        buf[len] = 0;
+        *a = materials_find(t, buf);
+        *b = materials_find(t, dash + 1);
+        if (*a >= 0 && *b >= 0) return 1;
+    }
+    return 0;
+}
+
+static void read_interactions(const dict *root, dem_system *s)
+{
+    const dict *d = dict_sub(root, "interactions");
+    material_table *t = &s->materials;
+    int set[DEM_MAX_TYPES][DEM_MAX_TYPES] = {{0}};
+    const dict *def = dict_sub_opt(d, "default");
+    for (int pass = 0; pass < 2; pass++) {       /* default first, then the named pairs */
+        for (int i = 0; i < dict_size(d); i++) {
+            const char *key = dict_key_at(d, i);
+            const int is_default = strcmp(key, "default") == 0;
+            if (is_default != (pass == 0)) continue;
+            const dict *e = is_default ? def : dict_dict_at(d, i);
+            if (!e) dict_fatal(d, key, "an interaction is a sub-dictionary { restitution; friction; }");
+            const double rest = dict_scalar(e, "restitution", 1e-6, 1.0);
+            const double mu = dict_scalar(e, "friction", 0.0, 10.0);
+            if (is_default) {
+                for (int a = 0; a < t->ntypes; a++)
+                    for (int b = 0; b < t->ntypes; b++) { materials_set_pair(t, a, b, rest, mu); set[a][b] = 1; }
+            } else {
+                int a, b;
+                if (!split_pair(t, key, &a, &b))
+                    dict_fatal(d, key, "expected '<material>-<material>' with two defined materials, or 'default'");
+                materials_set_pair(t, a, b, rest, mu);
+                set[a][b] = set[b][a] = 1;
+            }
+        }
+    }
+    for (int a = 0; a < t->ntypes; a++)
+        for (int b = 0; b < t->ntypes; b++)
+            if (!set[a][b])
+                dict_fatal_here(d, "no entry for the pair %s-%s (add it, or a 'default' entry)",
+                                t->mat[a].name, t->mat[b].name);
+}
+
+static void read_models(const dict *root, dem_system *s)
+{
+    const dict *d = dict_sub(root, "contactModels");
+    contact_models *m = &s->models;
+    m->normal = dict_choice(d, "normal", normal_model_names);
+    m->tangential = dict_choice(d, "tangential", tangential_model_names);
+    m->cohesion = dict_choice_opt(d, "cohesion", cohesion_model_names, COHESION_NONE);
+    m->rolling = dict_choice_opt(d, "rolling", rolling_model_names, ROLLING_NONE);
+    m->surface = dict_choice_opt(d, "surface", surface_model_names, SURFACE_DEFAULT);
+    if (m->normal == NORMAL_HOOKE)
+        m->characteristic_velocity = dict_scalar(d, "characteristicVelocity", 1e-6, 1e4);
+}
+
+static int material_of(const dict *d, const material_table *t)
+{
+    const char *name = dict_word(d, "material");
+    const int k = materials_find(t, name);
+    if (k < 0) dict_fatal(d, "material", "'%s' is not among the materials", name);
+    return k;
+}
+
+static wall *new_wall(dem_system *s, const dict *d, const char *name)
+{
+    if (s->nwalls == DEM_MAX_WALLS) dict_fatal_here(d, "at most %d wall primitives (a box counts 6)", DEM_MAX_WALLS);
+    wall *w = &s->walls[s->nwalls++];
+    memset(w, 0, sizeof *w);
+    snprintf(w->name, sizeof w->name, "%s", name);
+    return w;
+}
+
+static void read_walls(const dict *root, dem_system *s)
+{
+    const dict *d = dict_sub_opt(root, "walls");
+    if (!d) return;
+    static const char *const kinds[] = {"plane", "box", "cylinder", 0};
+    for (int i = 0; i < dict_size(d); i++) {
+        const char *name = dict_key_at(d, i);
+        if (!dict_is_dict_at(d, i)) dict_fatal(d, name, "a wall is a sub-dictionary { type ...; }");
+        const dict *e = dict_dict_at(d, i);
+        const int kind = dict_choice(e, "type", kinds);
+        const int mat = material_of(e, &s->materials);
+        if (kind == 0) {
+            wall *w = new_wall(s, e, name);
+            w->kind = WALL_PLANE;
+            w->material = mat;
+            dict_vector(e, "point", w->point);
+            dict_vector(e, "normal", w->normal);
+            const double len = sqrt(w->normal[0] * w->normal[0] + w->normal[1] * w->normal[1] + w->normal[2] * w->normal[2]);
+            if (!(len > 0.0)) dict_fatal(e, "normal", "the normal must not be zero");
+            for (int k = 0; k < 3; k++) w->normal[k] /= len;
+            if (dict_has(e, "boundsMin") || dict_has(e, "boundsMax")) {
+                w->bounded = 1;
+                dict_vector(e, "boundsMin", w->bounds_min);
+                dict_vector(e, "boundsMax", w->bounds_max);
+            }
+        } else if (kind == 1) {
+            double lo[3], hi[3];
+            dict_vector(e, "min", lo);
+            dict_vector(e, "max", hi);
+            for (int k = 0; k < 3; k++)
+                if (!(hi[k] > lo[k])) dict_fatal(e, "max", "max must exceed min in every direction");
+            for (int k = 0; k < 6; k++) {   /* six bounded faces, normals pointing inwards */
+                char face[80];
+                snprintf(face, sizeof face, "%s.%s%s", name, axis_names[k / 2], k % 2 ? "Max" : "Min");
+                wall *w = new_wall(s, e, face);
+                w->kind = WALL_PLANE;
+                w->material = mat;
+                w->bounded = 1;
+                const int a = k / 2;
+                for (int q = 0; q < 3; q++) { w->bounds_min[q] = lo[q]; w->bounds_max[q] = hi[q]; }
+                w->point[0] = lo[0]; w->point[1] = lo[1]; w->point[2] = lo[2];
+                w->point[a] = k % 2 ? hi[a] : lo[a];
+                w->normal[a] = k % 2 ? -1.0 : 1.0;
+            }
+        } else {
+            wall *w = new_wall(s, e, name);
+            w->kind = WALL_CYLINDER;
+            w->material = mat;
+            w->axis = dict_choice(e, "axis", axis_names);
+            double *c;
+            if (dict_scalar_list(e, "centre", &c) != 2) dict_fatal(e, "centre", "give the two coordinates across the axis, e.g. (0 0)");
+            w->centre[0] = c[0]; w->centre[1] = c[1];
+            free(c);
+            w->radius = dict_scalar(e, "radius", 1e-9, 1e6);
+            static const char *const sides[] = {"inside", "outside", 0};
+            w->inside = dict_choice_opt(e, "side", sides, 0) == 0;
+            w->axial_min = dict_scalar_opt(e, "axialMin", -INFINITY, -INFINITY, INFINITY);
+            w->axial_max = dict_scalar_opt(e, "axialMax", INFINITY, -INFINITY, INFINITY);
+        }
+    }
+}
+
+static void read_diameter(const dict *e, insertion *ins)
+{
+    const dict *d = dict_sub(e, "diameter");
+    static const char *const dists[] = {"constant", "uniform", "normal", "discrete", 0};
+    ins->dist = dict_choice(d, "distribution", dists);
+    switch (ins->dist) {
+    case SIZE_CONSTANT: ins->d_value = dict_scalar(d, "value", 1e-9, 10.0); break;
+    case SIZE_UNIFORM:
+    case SIZE_NORMAL:
+        if (ins->dist == SIZE_NORMAL) {
+            ins->d_mean = dict_scalar(d, "mean", 1e-9, 10.0);
+            ins->d_std = dict_scalar(d, "stdDev", 0.0, 10.0);
+        }
+        ins->d_min = dict_scalar(d, "min", 1e-9, 10.0);
+        ins->d_max = dict_scalar(d, "max", ins->d_min, 10.0);
+        if (ins->dist == SIZE_NORMAL && (ins->d_mean < ins->d_min || ins->d_mean > ins->d_max))
+            dict_fatal(d, "mean", "the mean %g m must lie within [min, max] = [%g, %g] m", ins->d_mean, ins->d_min, ins->d_max);
+        break;
+    case SIZE_DISCRETE: {
+        ins->ndiscrete = dict_scalar_list(d, "values", &ins->d_values);
+        const int nw = dict_scalar_list(d, "weights", &ins->d_weights);
+        if (ins->ndiscrete == 0) dict_fatal(d, "values", "give at least one diameter");
+        if (nw != ins->ndiscrete) dict_fatal(d, "weights", "%d weights for %d values", nw, ins->ndiscrete);
+        for (int k = 0; k < nw; k++) {
+            if (!(ins->d_values[k] > 0.0)) dict_fatal(d, "values", "diameters must be positive (got %g)", ins->d_values[k]);
+            if (!(ins->d_weights[k] >= 0.0)) dict_fatal(d, "weights", "weights must not be negative (got %g)", ins->d_weights[k]);
+        }
+        break;
+    }
+    }
+}
+
+static void read_region(const dict *e, insertion *ins)
+{
+    const dict *r = dict_sub(e, "region");
+    static const char *const kinds[] = {"box", "cylinder", 0};
+    ins->region = dict_choice(r, "type", kinds);
+    if (ins->region == REGION_BOX) {
+        dict_vector(r, "min", ins->min);
+        dict_vector(r, "max", ins->max);
+        for (int k = 0; k < 3; k++)
+            if (!(ins->max[k] > ins->min[k])) dict_fatal(r, "max", "max must exceed min in every direction");
+    } else {
+        ins->axis = dict_choice(r, "axis", axis_names);
+        double *c;
+        if (dict_scalar_list(r, "centre", &c) != 2) dict_fatal(r, "centre", "give the two coordinates across the axis, e.g. (0 0)");
+        ins->centre[0] = c[0]; ins->centre[1] = c[1];
+        free(c);
+        ins->radius = dict_scalar(r, "radius", 1e-9, 1e6);
+        ins->min[ins->axis] = dict_scalar(r, "axialMin", -1e6, 1e6);
+        ins->max[ins->axis] = dict_scalar(r, "axialMax", ins->min[ins->axis], 1e6);
+    }
+}
+
+static void run_insertions(const dict *root, dem_system *s, int insert)
+{
+    const dict *d = dict_sub_opt(root, "insertion");
+    if (!d) return;
+    for (int i = 0; i < dict_size(d); i++) {
+        const char *name = dict_key_at(d, i);
+        if (!dict_is_dict_at(d, i)) dict_fatal(d, name, "an insertion is a sub-dictionary");
+        const dict *e = dict_dict_at(d, i);
+        insertion ins;
+        memset(&ins, 0, sizeof ins);
+        snprintf(ins.name, sizeof ins.name, "%s", name);
+        read_region(e, &ins);
+        if (dict_has(e, "number") == dict_has(e, "solidFraction"))
+            dict_fatal_here(e, "give exactly one of 'number' and 'solidFraction'");
+        ins.number = dict_label_opt(e, "number", 0, 1, 100000000);
+        ins.solid_fraction = dict_scalar_opt(e, "solidFraction", 0.0, 1e-6, 0.6);
+        ins.material = material_of(e, &s->materials);
+        const double zero[3] = {0, 0, 0};
+        dict_vector_opt(e, "velocity", ins.velocity, zero);
+        read_diameter(e, &ins);
+        ins.seed = (uint64_t)dict_label_opt(e, "seed", 12345, 0, 2147483647L);
+        ins.max_attempts = (int)dict_label_opt(e, "maxAttempts", 200, 1, 100000000);
+        for (int k = 0; k < 3; k++)
+            if (ins.region == REGION_BOX && (ins.min[k] < s->domain_min[k] || ins.max[k] > s->domain_max[k]))
+                dict_fatal(dict_sub(e, "region"), "min", "the region must lie inside the domain");
+        if (insert) printf("insertion '%s': %ld particles\n", name, insertion_run(s, &ins));
+        free(ins.d_values);
+        free(ins.d_weights);
+    }
+}
+
+/* Default for the contact-time check: the fastest insertion speed plus a free fall over the
+ * domain's extent along gravity. */
+double case_default_max_velocity(const dem_system *s)
+{
+    double vmax = 0.0, g = 0.0, h = 0.0;
+    for (int i = 0; i < s->p.n; i++) {
+        const double *v = s->p.v[i];
+        vmax = fmax(vmax, sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]));
+    }
+    for (int k = 0; k < 3; k++) {
+        g += s->gravity[k] * s->gravity[k];
+        if (s->gravity[k] != 0.0 && !s->periodic[k]) h = fmax(h, s->domain_max[k] - s->domain_min[k]);
+    }
+    return fmax(vmax + sqrt(2.0 * sqrt(g) * h), 0.1);
+}
+
+void case_read(const char *case_dir, dem_system *s, run_settings *rs, int skip_insertion)
+{
+    snprintf(rs->dict_path, sizeof rs->dict_path, "%s/constant/demProperties", case_dir);
+    dict *root = dict_read(rs->dict_path);
+    s->dt = dict_scalar(root, "timeStep", 1e-12, 1.0);
+    snprintf(rs->timestep_source, sizeof rs->timestep_source, "%s:%d", rs->dict_path, dict_key_line(root, "timeStep"));
+    rs->end_time = dict_scalar(root, "endTime", 0.0, 1e9);
+    rs->write_interval = dict_scalar_opt(root, "writeInterval", 0.0, 0.0, 1e9);
+    rs->progress_interval = dict_scalar_opt(root, "progressInterval", 5.0, 0.0, 1e6);
+    const double zero[3] = {0, 0, 0};
+    dict_vector_opt(root, "gravity", s->gravity, zero);
+    s->nlist.skin = dict_scalar_opt(root, "skin", 0.0, 0.0, 10.0);
+    s->nlist.sort_interval = (int)dict_label_opt(root, "sortInterval", 20, 0, 1000000);
+    s->max_overlap_fraction = dict_scalar_opt(root, "maxOverlapFraction", 0.2, 1e-6, 1.0);
+    rs->timestep_override = dict_bool_opt(root, "timeStepOverride", 0);
+
+    read_domain(root, s);
+    read_materials(root, s);
+    read_interactions(root, s);
+    read_models(root, s);
+    read_walls(root, s);
+    run_insertions(root, s, !skip_insertion);
+    rs->max_expected_velocity = dict_has(root, "maxExpectedVelocity")
+        ? dict_scalar(root, "maxExpectedVelocity", 1e-6, 1e5) : -1.0;
+    dict_check_unused(root);
+    dict_free(root);
+}

@@ -1,0 +1,194 @@
+#include <math.h>
+#include <stdlib.h>
+
+#include "error.h"
+#include "insert.h"
+#include "rng.h"
+#include "system.h"
+
+double insertion_max_diameter(const insertion *ins)
+{
+    switch (ins->dist) {
+    case SIZE_CONSTANT: return ins->d_value;
+    case SIZE_UNIFORM:
+    case SIZE_NORMAL: return ins->d_max;
+    case SIZE_DISCRETE: {
+        double m = 0.0;
+        for (int k = 0; k < ins->ndiscrete; k++) m = fmax(m, ins->d_values[k]);
+        return m;
+    }
+    }
+    return 0.0;
+}
+
+static double draw_diameter(const insertion *ins, rng *r)
+{
+    switch (ins->dist) {
+    case SIZE_CONSTANT: return ins->d_value;
+    case SIZE_UNIFORM: return ins->d_min + (ins->d_max - ins->d_min) * rng_uniform(r);
+    case SIZE_NORMAL:
+        for (;;) {   /* truncated normal by rejection; the range was checked to hold mass */
+            const double d = ins->d_mean + ins->d_std * rng_normal(r);
+            if (d >= ins->d_min && d <= ins->d_max) return d;
+        }
+    case SIZE_DISCRETE: {
+        double total = 0.0;
+        for (int k = 0; k < ins->ndiscrete; k++) total += ins->d_weights[k];
+        double u = rng_uniform(r) * total;
+        for (int k = 0; k < ins->ndiscrete; k++) {
+            if (u < ins->d_weights[k]) return ins->d_values[k];
+            u -= ins->d_weights[k];
+        }
+        return ins->d_values[ins->ndiscrete - 1];
+    }
+    }
+    return 0.0;
+}
+
+static void draw_position(const insertion *ins, double radius, rng *r, double x[3])
+{
+    if (ins->region == REGION_BOX) {
+        for (int d = 0; d < 3; d++)
+            x[d] = ins->min[d] + radius + (ins->max[d] - ins->min[d] - 2.0 * radius) * rng_uniform(r);
+        return;
+    }
+    const int a = ins->axis, b = (a + 1) % 3, c = (a + 2) % 3;
+    const double reach = ins->radius - radius;
+    double u, w;
+    do {
+        u = 2.0 * rng_uniform(r) - 1.0;
+        w = 2.0 * rng_uniform(r) - 1.0;
+    } while (u * u + w * w > 1.0);
+    x[a] = ins->min[a] + radius + (ins->max[a] - ins->min[a] - 2.0 * radius) * rng_uniform(r);
+    x[b] = ins->centre[0] + reach * u;
+    x[c] = ins->centre[1] + reach * w;
+}
+
+static double region_volume(const insertion *ins)
+{
+    if (ins->region == REGION_BOX)
+        return (ins->max[0] - ins->min[0]) * (ins->max[1] - ins->min[1]) * (ins->max[2] - ins->min[2]);
+    return M_PI * ins->radius * ins->radius * (ins->max[ins->axis] - ins->min[ins->axis]);
+}
+
+/* A uniform grid over the domain with cell size >= the largest diameter, as linked lists. */
+typedef struct grid {
+    int n[3];
+    double lo[3], h[3];
+    int *head, *next;
+} grid;
+
+static int grid_cell(const grid *g, const double x[3], int c[3])
+{
+    for (int d = 0; d < 3; d++) {
+        c[d] = (int)floor((x[d] - g->lo[d]) / g->h[d]);
+        if (c[d] < 0) c[d] = 0;
+        if (c[d] >= g->n[d]) c[d] = g->n[d] - 1;
+    }
+    return (c[2] * g->n[1] + c[1]) * g->n[0] + c[0];
+}
+
+static void grid_add(grid *g, const particles *p, int i)
+{
+    int c[3];
+    const int cell = grid_cell(g, p->x[i], c);
+    g->next[i] = g->head[cell];
+    g->head[cell] = i;
+}
+
+static int overlaps(const dem_system *s, const grid *g, const double x[3], double radius)
+{
+    const particles *p = &s->p;
+    int c[3];
+    grid_cell(g, x, c);
+    for (int oz = -1; oz <= 1; oz++)
+        for (int oy = -1; oy <= 1; oy++)
+            for (int ox = -1; ox <= 1; ox++) {
+                int q[3] = {c[0] + ox, c[1] + oy, c[2] + oz};
+                int skip = 0;
+                for (int d = 0; d < 3; d++) {
+                    if (s->periodic[d]) q[d] = (q[d] + g->n[d]) % g->n[d];
+                    else if (q[d] < 0 || q[d] >= g->n[d]) skip = 1;
+                }
+                if (skip) continue;
+                for (int j = g->head[(q[2] * g->n[1] + q[1]) * g->n[0] + q[0]]; j >= 0; j = g->next[j]) {
+                    double d2 = 0.0;
+                    for (int d = 0; d < 3; d++) {
+                        double dx = x[d] - p->x[j][d];
+                        dx -= s->period[d] * nearbyint(dx * s->inv_period[d]);
+                        d2 += dx * dx;
+                    }
+                    const double reach = radius + p->radius[j];
+                    if (d2 < reach * reach) return 1;
+                }
+            }
+    for (int k = 0; k < s->nwalls; k++) {
+        double gap, en[3];
+        if (wall_gap(&s->walls[k], x, radius, &gap, en) && gap < 0.0) return 1;
+    }
+    return 0;
+}
+
+long insertion_run(dem_system *s, const insertion *ins)
+{
+    particles *p = &s->p;
+    double dmax = insertion_max_diameter(ins);
+    for (int i = 0; i < p->n; i++) dmax = fmax(dmax, 2.0 * p->radius[i]);
+    grid g;
+    long ncells = 1;
+    for (int d = 0; d < 3; d++) {
+        const double len = s->domain_max[d] - s->domain_min[d];
+        g.n[d] = (int)fmax(1.0, fmin(512.0, floor(len / dmax)));
+        if (s->periodic[d] && g.n[d] < 3) g.n[d] = 1;
+        g.h[d] = len / g.n[d];
+        g.lo[d] = s->domain_min[d];
+        ncells *= g.n[d];
+    }
+    const long target = ins->number > 0 ? ins->number : -1;
+    const double target_volume = ins->solid_fraction * region_volume(ins);
+    g.head = dem_malloc((size_t)ncells * sizeof(int));
+    for (long c = 0; c < ncells; c++) g.head[c] = -1;
+    long capacity = p->n + (target > 0 ? target : 1024);
+    g.next = dem_malloc((size_t)capacity * sizeof(int));
+    for (int i = 0; i < p->n; i++) grid_add(&g, p, i);
+
+    rng r;
+    rng_seed(&r, ins->seed);
+    const double density = s->materials.mat[ins->material].density;
+    long placed = 0;
+    double volume = 0.0;
+    const double dmax_ins = insertion_max_diameter(ins);
+    const double region_extent_ok = ins->region == REGION_BOX
+        ? fmin(fmin(ins->max[0] - ins->min[0], ins->max[1] - ins->min[1]), ins->max[2] - ins->min[2])
+        : fmin(2.0 * ins->radius, ins->max[ins->axis] - ins->min[ins->axis]);
+    if (region_extent_ok < dmax_ins)
+        dem_fatal("insertion '%s': the region (smallest extent %g m) is smaller than the largest "
+                  "diameter %g m", ins->name, region_extent_ok, dmax_ins);
+
+    while (target > 0 ? placed < target : volume < target_volume) {
+        const double radius = 0.5 * draw_diameter(ins, &r);
+        double x[3];
+        int ok = 0;
+        for (int attempt = 0; attempt < ins->max_attempts && !ok; attempt++) {
+            draw_position(ins, radius, &r, x);
+            ok = !overlaps(s, &g, x, radius);
+        }
+        if (!ok)
+            dem_fatal("insertion '%s': placed only %ld particles (solid fraction %.3f of the "
+                      "region) before a particle found no free place in %d attempts. Enlarge the "
+                      "region, lower number/solidFraction (random placement jams near 0.3), or "
+                      "raise maxAttempts.",
+                      ins->name, placed, volume / region_volume(ins), ins->max_attempts);
+        if (p->n + 1 > capacity) {
+            capacity *= 2;
+            g.next = dem_realloc(g.next, (size_t)capacity * sizeof(int));
+        }
+        const int i = particles_add(p, x, ins->velocity, radius, density, ins->material, s->next_id++);
+        grid_add(&g, p, i);
+        placed++;
+        volume += 4.0 / 3.0 * M_PI * radius * radius * radius;
+    }
+    free(g.head);
+    free(g.next);
+    return placed;
+}

@@ -1,0 +1,27 @@
+#include <math.h>
+#include <string.h>
+
+#include "materials.h"
+
+int materials_find(const material_table *t, const char *name)
+{
+    for (int i = 0; i < t->ntypes; i++)
+        if (strcmp(t->mat[i].name, name) == 0) return i;
+    return -1;
+}
+
+void materials_set_pair(material_table *t, int ti, int tj, double restitution, double friction)
+{
+    const material *a = &t->mat[ti], *b = &t->mat[tj];
+    pair_coeffs c;
+    c.Y_eff = 1.0 / ((1.0 - a->poisson_ratio * a->poisson_ratio) / a->youngs_modulus +
+                     (1.0 - b->poisson_ratio * b->poisson_ratio) / b->youngs_modulus);
+    c.G_eff = 1.0 / (2.0 * (2.0 - a->poisson_ratio) * (1.0 + a->poisson_ratio) / a->youngs_modulus +
+                     2.0 * (2.0 - b->poisson_ratio) * (1.0 + b->poisson_ratio) / b->youngs_modulus);
+    c.restitution = restitution;
+    c.log_e = log(restitution);
+    c.beta = c.log_e / sqrt(c.log_e * c.log_e + M_PI * M_PI);
+    c.friction = friction;
+    t->pair[ti * DEM_MAX_TYPES + tj] = c;
+    t->pair[tj * DEM_MAX_TYPES + ti] = c;
+}

@@ -1,0 +1,41 @@
+/* Materials (one per particle type) and the per type-pair constants the contact models use.
+ * Effective moduli follow LIGGGHTS' definitions so that parameters carry over unchanged. */
+#ifndef DEM_MATERIALS_H
+#define DEM_MATERIALS_H
+
+#define DEM_MAX_TYPES 16
+#define DEM_NAME_LEN 64
+
+typedef struct material {
+    char name[DEM_NAME_LEN];
+    double youngs_modulus;   /* E [Pa] */
+    double poisson_ratio;    /* nu [-] */
+    double density;          /* rho [kg/m^3] */
+} material;
+
+/* Constants for one pair of types (also used for particle-wall with the wall's material). */
+typedef struct pair_coeffs {
+    double Y_eff;            /* 1/Y* = (1-nu_i^2)/E_i + (1-nu_j^2)/E_j  [Pa] */
+    double G_eff;            /* 1/G* = 2(2-nu_i)(1+nu_i)/E_i + 2(2-nu_j)(1+nu_j)/E_j  [Pa] */
+    double restitution;      /* e [-] */
+    double beta;             /* ln(e) / sqrt(ln(e)^2 + pi^2), Hertz damping [-] */
+    double log_e;            /* ln(e), Hooke damping [-] */
+    double friction;         /* Coulomb mu [-] */
+} pair_coeffs;
+
+typedef struct material_table {
+    int ntypes;
+    material mat[DEM_MAX_TYPES];
+    pair_coeffs pair[DEM_MAX_TYPES * DEM_MAX_TYPES];  /* [ti * DEM_MAX_TYPES + tj] */
+} material_table;
+
+int materials_find(const material_table *t, const char *name);   /* -1 if absent */
+/* Fill pair[ti][tj] and pair[tj][ti] from the two materials, e and mu. */
+void materials_set_pair(material_table *t, int ti, int tj, double restitution, double friction);
+
+static inline const pair_coeffs *materials_pair(const material_table *t, int ti, int tj)
+{
+    return &t->pair[ti * DEM_MAX_TYPES + tj];
+}
+
+#endif

@@ -1,0 +1,39 @@
+/* Linked cells and a half Verlet list with skin. Each pair is stored once (under one of its
+ * particles), with its contact history beside it; the history survives rebuilds and sorts.
+ * The list is rebuilt only when some particle has moved more than half the skin since the
+ * last build. Every sortInterval-th rebuild first re-orders the particles by cell, so that
+ * neighbours are near each other in memory. */
+#ifndef DEM_NEIGHBOUR_H
+#define DEM_NEIGHBOUR_H
+
+#include "particles.h"
+
+typedef struct neighbour_list {
+    double skin;                 /* [m] */
+    int sort_interval;           /* rebuilds between sorts, 0 = never */
+    int history_size;            /* doubles per pair */
+    /* CSR half list: partners of i are partner[start[i] .. start[i+1]) */
+    int *start;
+    int *partner;
+    double *history;             /* history_size doubles per pair */
+    long npairs, capacity;
+    int rows;                    /* particles the list was built for */
+    vec3 *x_at_build;            /* positions at the last build */
+    int build_capacity;
+    long builds, sorts;
+    /* cells */
+    int ncell[3];
+    double cell_size[3], origin[3];
+    int *cell_start, *cell_of, *cell_order;
+    long cell_capacity;
+} neighbour_list;
+
+struct dem_system;
+void neighbour_init(neighbour_list *nl, double skin, int sort_interval, int history_size);
+void neighbour_free(neighbour_list *nl);
+/* True when a rebuild is due. */
+int neighbour_needs_rebuild(const neighbour_list *nl, const particles *p);
+/* Rebuild (sorting first when due); permutes the per-particle wall histories along. */
+void neighbour_rebuild(struct dem_system *s);
+
+#endif

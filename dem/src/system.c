@@ -1,0 +1,130 @@
+/* Run state and the velocity-Verlet step (translation and rotation of spheres). */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "error.h"
+#include "system.h"
+
+void system_init(dem_system *s)
+{
+    memset(s, 0, sizeof *s);
+    particles_init(&s->p);
+    s->models.normal = NORMAL_HERTZ;
+    s->models.tangential = TANGENTIAL_HISTORY;
+    s->models.characteristic_velocity = 1.0;
+    s->max_overlap_fraction = 0.2;
+    neighbour_init(&s->nlist, 0.0, 20, 0);
+}
+
+void system_free(dem_system *s)
+{
+    particles_free(&s->p);
+    neighbour_free(&s->nlist);
+    free(s->wall_history);
+    for (int k = 0; k < DEM_MAX_WALLS; k++) free(s->wall_candidates[k]);
+    memset(s, 0, sizeof *s);
+}
+
+void system_resize_wall_history(dem_system *s, int old_n)
+{
+    const size_t block = (size_t)s->nwalls * s->history_size;
+    s->wall_history = dem_realloc(s->wall_history, (size_t)(s->p.n ? s->p.n : 1) * (block ? block : 1) * sizeof(double));
+    if (s->p.n > old_n)
+        memset(s->wall_history + (size_t)old_n * block, 0, (size_t)(s->p.n - old_n) * block * sizeof(double));
+}
+
+static void rebuild(dem_system *s)
+{
+    neighbour_rebuild(s);
+    walls_build_candidates(s);
+}
+
+void system_setup(dem_system *s)
+{
+    s->history_size = contact_history_size(&s->models);
+    s->nlist.history_size = s->history_size;
+    for (int d = 0; d < 3; d++) {
+        s->period[d] = s->periodic[d] ? s->domain_max[d] - s->domain_min[d] : 0.0;
+        s->inv_period[d] = s->periodic[d] ? 1.0 / s->period[d] : 0.0;
+    }
+    if (s->nlist.skin <= 0.0) {
+        double rmin = INFINITY;
+        for (int i = 0; i < s->p.n; i++) rmin = fmin(rmin, s->p.radius[i]);
+        s->nlist.skin = s->p.n ? 0.2 * rmin : 1e-3;   /* 10 % of the smallest diameter */
+    }
+    system_resize_wall_history(s, 0);
+    rebuild(s);
+    system_compute_forces(s);
+}
+
+void system_compute_forces(dem_system *s)
+{
+    particles *p = &s->p;
+    for (int i = 0; i < p->n; i++) {
+        for (int d = 0; d < 3; d++) {
+            p->f[i][d] = p->mass[i] * s->gravity[d] + p->f_ext[i][d];
+            p->torque[i][d] = 0.0;
+        }
+    }
+    s->max_overlap_seen = 0.0;
+    pair_forces_add(s);
+    walls_add_forces(s);
+}
+
+static void half_kick(particles *p, double dt)
+{
+    const double h = 0.5 * dt;
+    for (int i = 0; i < p->n; i++) {
+        const double am = h * p->inv_mass[i], ai = h * p->inv_inertia[i];
+        for (int d = 0; d < 3; d++) {
+            p->v[i][d] += am * p->f[i][d];
+            p->omega[i][d] += ai * p->torque[i][d];
+        }
+    }
+}
+
+void system_step(dem_system *s)
+{
+    particles *p = &s->p;
+    half_kick(p, s->dt);
+    for (int i = 0; i < p->n; i++)
+        for (int d = 0; d < 3; d++) p->x[i][d] += s->dt * p->v[i][d];
+    if (neighbour_needs_rebuild(&s->nlist, p)) rebuild(s);
+    system_compute_forces(s);
+    half_kick(p, s->dt);
+    s->time += s->dt;
+    s->step++;
+    if (s->max_overlap_seen > s->max_overlap_fraction || s->step % 256 == 0) system_check_health(s);
+}
+
+void system_check_health(const dem_system *s)
+{
+    const particles *p = &s->p;
+    for (int i = 0; i < p->n; i++) {
+        const double *x = p->x[i], *v = p->v[i], *w = p->omega[i];
+        if (!(isfinite(x[0]) && isfinite(x[1]) && isfinite(x[2]) && isfinite(v[0]) && isfinite(v[1]) &&
+              isfinite(v[2]) && isfinite(w[0]) && isfinite(w[1]) && isfinite(w[2])))
+            dem_fatal("the state blew up at t = %g s (step %ld): particle id %lld has position "
+                      "(%g %g %g) m, velocity (%g %g %g) m/s. Reduce timeStep or check the "
+                      "material and insertion parameters.",
+                      s->time, s->step, (long long)p->id[i], x[0], x[1], x[2], v[0], v[1], v[2]);
+    }
+    if (s->max_overlap_seen > s->max_overlap_fraction)
+        dem_fatal("the state blew up at t = %g s (step %ld): a contact overlap reached %.3g of the "
+                  "smaller radius (maxOverlapFraction %g). The time step is too large for these "
+                  "impacts, or particles were inserted overlapping.",
+                  s->time, s->step, s->max_overlap_seen, s->max_overlap_fraction);
+}
+
+double system_kinetic_energy(const dem_system *s)
+{
+    const particles *p = &s->p;
+    double e = 0.0;
+    for (int i = 0; i < p->n; i++) {
+        const double *v = p->v[i], *w = p->omega[i];
+        e += 0.5 * p->mass[i] * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+        e += 0.5 / p->inv_inertia[i] * (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+    }
+    return e;
+}

@@ -1,0 +1,58 @@
+/* The DEM system: particles, materials, models, walls, neighbour list and run state. */
+#ifndef DEM_SYSTEM_H
+#define DEM_SYSTEM_H
+
+#include "contact/contact.h"
+#include "materials.h"
+#include "neighbour.h"
+#include "particles.h"
+#include "walls.h"
+
+typedef struct dem_system {
+    particles p;
+    material_table materials;
+    contact_models models;
+    int history_size;                 /* doubles per contact, from the models */
+
+    double domain_min[3], domain_max[3];
+    int periodic[3];
+    double period[3];                 /* box length in periodic directions, 0 otherwise */
+    double inv_period[3];             /* 1/period, 0 in non-periodic directions */
+
+    int nwalls;
+    wall walls[DEM_MAX_WALLS];
+    double *wall_history;             /* [particle][wall][history_size] */
+    int *wall_candidates[DEM_MAX_WALLS];   /* particles within radius + skin of each wall */
+    int wall_ncandidates[DEM_MAX_WALLS];
+
+    neighbour_list nlist;
+
+    double gravity[3];                /* [m/s^2] */
+    double dt;                        /* [s] */
+    double time;                      /* [s] */
+    long step;
+    double max_overlap_fraction;      /* stop above this overlap / smaller radius */
+    double max_overlap_seen;          /* largest overlap / smaller radius in the last step */
+    int64_t next_id;
+} dem_system;
+
+void system_init(dem_system *s);
+void system_free(dem_system *s);
+/* After particles, materials, models, walls are set: allocate histories, build the list,
+ * compute the first forces. */
+void system_setup(dem_system *s);
+/* Resize the wall history to the current particle count (new entries zeroed). */
+void system_resize_wall_history(dem_system *s, int old_n);
+/* One velocity-Verlet step. */
+void system_step(dem_system *s);
+/* Forces for the current positions (pairs, walls, gravity, external). */
+void system_compute_forces(dem_system *s);
+/* Stop with a message if a position or velocity is not finite or an overlap is too large. */
+void system_check_health(const dem_system *s);
+/* Kinetic energy (translational + rotational) [J]. */
+double system_kinetic_energy(const dem_system *s);
+
+/* Pair forces (pair_forces.c). */
+void pair_forces_add(dem_system *s);
+
+#endif

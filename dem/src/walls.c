@@ -1,0 +1,140 @@
+/* Particle-wall contact forces. Each wall keeps a candidate list of the particles within
+ * radius + skin of it, refreshed with the neighbour list; the force loop visits only those. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "contact/normal_hertz.h"
+#include "contact/normal_hooke.h"
+#include "contact/tangential_history.h"
+#include "error.h"
+#include "system.h"
+
+#define ALWAYS_INLINE inline __attribute__((always_inline))
+
+int wall_gap(const wall *w, const double x[3], double radius, double *gap, double en[3])
+{
+    if (w->kind == WALL_PLANE) {
+        const double dist = (x[0] - w->point[0]) * w->normal[0] + (x[1] - w->point[1]) * w->normal[1] +
+                            (x[2] - w->point[2]) * w->normal[2];
+        if (w->bounded) {
+            for (int d = 0; d < 3; d++) {
+                const double proj = x[d] - dist * w->normal[d];
+                if (proj < w->bounds_min[d] || proj > w->bounds_max[d]) return 0;
+            }
+        }
+        *gap = dist - radius;
+        en[0] = w->normal[0]; en[1] = w->normal[1]; en[2] = w->normal[2];
+        return 1;
+    }
+    /* cylinder */
+    const int a = w->axis, b = (a + 1) % 3, c = (a + 2) % 3;
+    if (x[a] < w->axial_min || x[a] > w->axial_max) return 0;
+    const double db = x[b] - w->centre[0], dc = x[c] - w->centre[1];
+    const double rho = sqrt(db * db + dc * dc);
+    if (rho == 0.0) {               /* on the axis: no defined normal, and far from the wall */
+        *gap = w->inside ? w->radius - radius : -w->radius - radius;
+        en[0] = en[1] = en[2] = 0.0;
+        en[b] = w->inside ? -1.0 : 1.0;
+        return 1;
+    }
+    const double sign = w->inside ? -1.0 : 1.0;   /* normal from the wall towards the centre */
+    en[a] = 0.0;
+    en[b] = sign * db / rho;
+    en[c] = sign * dc / rho;
+    *gap = (w->inside ? w->radius - rho : rho - w->radius) - radius;
+    return 1;
+}
+
+/* Refresh the candidate lists (called after each neighbour-list build). */
+void walls_build_candidates(dem_system *s)
+{
+    const particles *p = &s->p;
+    for (int k = 0; k < s->nwalls; k++) {
+        s->wall_candidates[k] = dem_realloc(s->wall_candidates[k], (size_t)(p->n ? p->n : 1) * sizeof(int));
+        int count = 0;
+        for (int i = 0; i < p->n; i++) {
+            double gap, en[3];
+            /* bounded walls: test with the bounds widened by the skin, cheaply, by testing the
+             * position itself and letting the force loop decide the exact bounds */
+            wall probe = s->walls[k];
+            if (probe.bounded)
+                for (int d = 0; d < 3; d++) {
+                    probe.bounds_min[d] -= s->nlist.skin;
+                    probe.bounds_max[d] += s->nlist.skin;
+                }
+            if (probe.kind == WALL_CYLINDER) {
+                probe.axial_min -= s->nlist.skin;
+                probe.axial_max += s->nlist.skin;
+            }
+            if (wall_gap(&probe, p->x[i], p->radius[i], &gap, en) && gap < s->nlist.skin)
+                s->wall_candidates[k][count++] = i;
+            else if (s->history_size > 0)
+                memset(s->wall_history + ((size_t)i * s->nwalls + k) * s->history_size, 0,
+                       (size_t)s->history_size * sizeof(double));
+        }
+        s->wall_ncandidates[k] = count;
+    }
+}
+
+static ALWAYS_INLINE void wall_loop(dem_system *s, const enum normal_model normal,
+                                    const enum tangential_model tangential)
+{
+    particles *p = &s->p;
+    const int hs = s->history_size;
+    const double dt = s->dt, v_char = s->models.characteristic_velocity;
+    double max_overlap = 0.0;
+    for (int k = 0; k < s->nwalls; k++) {
+        const wall *wl = &s->walls[k];
+        const int *cand = s->wall_candidates[k];
+        for (int m = 0; m < s->wall_ncandidates[k]; m++) {
+            const int i = cand[m];
+            double *h = s->wall_history + ((size_t)i * s->nwalls + k) * hs;
+            double gap, en[3];
+            if (!wall_gap(wl, p->x[i], p->radius[i], &gap, en) || gap >= 0.0) {
+                if (tangential == TANGENTIAL_HISTORY) h[0] = h[1] = h[2] = 0.0;
+                continue;
+            }
+            const double delta = -gap, ri = p->radius[i], mi = p->mass[i];
+            const pair_coeffs *c = materials_pair(&s->materials, p->type[i], wl->material);
+            max_overlap = fmax(max_overlap, delta / ri);
+            const double *vi = p->v[i];
+            const double vn = vi[0] * en[0] + vi[1] * en[1] + vi[2] * en[2];
+            normal_result n;
+            if (normal == NORMAL_HERTZ) n = normal_hertz(c, delta, ri, mi, vn);
+            else n = normal_hooke(c, delta, ri, mi, vn, v_char);
+            double fc[3] = {n.fn * en[0], n.fn * en[1], n.fn * en[2]};
+            if (tangential == TANGENTIAL_HISTORY) {
+                const double cr = ri - 0.5 * delta;
+                const double *wi = p->omega[i];
+                const double vt[3] = {vi[0] - vn * en[0] - cr * (wi[1] * en[2] - wi[2] * en[1]),
+                                      vi[1] - vn * en[1] - cr * (wi[2] * en[0] - wi[0] * en[2]),
+                                      vi[2] - vn * en[2] - cr * (wi[0] * en[1] - wi[1] * en[0])};
+                double ft[3];
+                tangential_history(h, en, vt, n, c->friction, dt, ft);
+                fc[0] += ft[0]; fc[1] += ft[1]; fc[2] += ft[2];
+                p->torque[i][0] -= cr * (en[1] * ft[2] - en[2] * ft[1]);
+                p->torque[i][1] -= cr * (en[2] * ft[0] - en[0] * ft[2]);
+                p->torque[i][2] -= cr * (en[0] * ft[1] - en[1] * ft[0]);
+            }
+            p->f[i][0] += fc[0]; p->f[i][1] += fc[1]; p->f[i][2] += fc[2];
+        }
+    }
+    s->max_overlap_seen = fmax(s->max_overlap_seen, max_overlap);
+}
+
+#define KERNEL(NAME, NORMAL, TANGENTIAL) \
+    static void NAME(dem_system *s) { wall_loop(s, NORMAL, TANGENTIAL); }
+KERNEL(hooke_none, NORMAL_HOOKE, TANGENTIAL_NONE)
+KERNEL(hooke_history, NORMAL_HOOKE, TANGENTIAL_HISTORY)
+KERNEL(hertz_none, NORMAL_HERTZ, TANGENTIAL_NONE)
+KERNEL(hertz_history, NORMAL_HERTZ, TANGENTIAL_HISTORY)
+
+typedef void (*wall_kernel)(dem_system *);
+static const wall_kernel kernels[NORMAL_COUNT][TANGENTIAL_COUNT] = {
+    {hooke_none, hooke_history}, {hertz_none, hertz_history}};
+
+void walls_add_forces(dem_system *s)
+{
+    kernels[s->models.normal][s->models.tangential](s);
+}
