@@ -98,6 +98,7 @@ static void read_models(const dict *root, dem_system *s)
     m->cohesion = dict_choice_opt(d, "cohesion", cohesion_model_names, COHESION_NONE);
     m->rolling = dict_choice_opt(d, "rolling", rolling_model_names, ROLLING_NONE);
     m->surface = dict_choice_opt(d, "surface", surface_model_names, SURFACE_DEFAULT);
+    m->fn_floor = dict_bool_opt(d, "limitForce", 0) ? 0.0 : -INFINITY;
     if (m->normal == NORMAL_HOOKE)
         m->characteristic_velocity = dict_scalar(d, "characteristicVelocity", 1e-6, 1e4);
 }

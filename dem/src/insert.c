@@ -135,17 +135,24 @@ long insertion_run(dem_system *s, const insertion *ins)
     double dmax = insertion_max_diameter(ins);
     for (int i = 0; i < p->n; i++) dmax = fmax(dmax, 2.0 * p->radius[i]);
     grid g;
-    long ncells = 1;
-    for (int d = 0; d < 3; d++) {
-        const double len = s->domain_max[d] - s->domain_min[d];
-        g.n[d] = (int)fmax(1.0, fmin(512.0, floor(len / dmax)));
-        if (s->periodic[d] && g.n[d] < 3) g.n[d] = 1;
-        g.h[d] = len / g.n[d];
-        g.lo[d] = s->domain_min[d];
-        ncells *= g.n[d];
-    }
     const long target = ins->number > 0 ? ins->number : -1;
     const double target_volume = ins->solid_fraction * region_volume(ins);
+    const double mean_volume = M_PI / 6.0 * pow(0.5 * dmax, 3);   /* a low guess: more cells */
+    const long expected = p->n + (target > 0 ? target : (long)(target_volume / mean_volume));
+    const long max_cells = 4 * expected + 64;
+    long ncells;
+    for (double size = dmax;; size *= 1.26) {
+        ncells = 1;
+        for (int d = 0; d < 3; d++) {
+            const double len = s->domain_max[d] - s->domain_min[d];
+            g.n[d] = (int)fmax(1.0, fmin(1 << 20, floor(len / size)));
+            if (s->periodic[d] && g.n[d] < 3) g.n[d] = 1;   /* one cell: no wrap duplicates */
+            g.h[d] = len / g.n[d];
+            g.lo[d] = s->domain_min[d];
+            ncells *= g.n[d];
+        }
+        if (ncells <= max_cells) break;
+    }
     g.head = dem_malloc((size_t)ncells * sizeof(int));
     for (long c = 0; c < ncells; c++) g.head[c] = -1;
     long capacity = p->n + (target > 0 ? target : 1024);

@@ -71,19 +71,28 @@ static void bin_particles(dem_system *s)
     double rmax = 0.0;
     for (int i = 0; i < p->n; i++) rmax = fmax(rmax, p->radius[i]);
     const double cutoff = 2.0 * rmax + nl->skin;
-    long ncells = 1;
-    for (int d = 0; d < 3; d++) {
-        const double len = s->domain_max[d] - s->domain_min[d];
-        int n = (int)floor(len / cutoff);
-        if (n < 1) n = 1;
-        if (n > 1024) n = 1024;
-        if (s->periodic[d] && n < 3)
+    for (int d = 0; d < 3; d++)
+        if (s->periodic[d] && s->domain_max[d] - s->domain_min[d] < 3.0 * cutoff)
             dem_fatal("periodic direction %c: the domain length %g m must be at least 3 x "
-                      "(largest diameter + skin) = %g m", "xyz"[d], len, 3.0 * cutoff);
-        nl->ncell[d] = n;
-        nl->cell_size[d] = len / n;
-        nl->origin[d] = s->domain_min[d];
-        ncells *= n;
+                      "(largest diameter + skin) = %g m", "xyz"[d],
+                      s->domain_max[d] - s->domain_min[d], 3.0 * cutoff);
+    /* Cells no smaller than the cutoff, and not many more cells than particles (a sparse
+     * system in a large domain would otherwise spend its time on empty cells). */
+    const long max_cells = 4L * p->n + 64;
+    long ncells;
+    for (double size = cutoff;; size *= 1.26) {
+        ncells = 1;
+        for (int d = 0; d < 3; d++) {
+            const double len = s->domain_max[d] - s->domain_min[d];
+            int n = (int)fmin(floor(len / size), 1 << 20);
+            if (n < 1) n = 1;
+            if (s->periodic[d] && n < 3) n = 3;
+            nl->ncell[d] = n;
+            nl->cell_size[d] = len / n;
+            nl->origin[d] = s->domain_min[d];
+            ncells *= n;
+        }
+        if (ncells <= max_cells) break;
     }
     if (ncells + 1 > nl->cell_capacity) {
         nl->cell_capacity = ncells + 1;

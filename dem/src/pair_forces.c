@@ -25,7 +25,7 @@ static ALWAYS_INLINE void pair_loop(dem_system *s, const enum normal_model norma
     const int *restrict start = nl->start, *restrict partner = nl->partner;
     double *restrict hist = nl->history;
     const int hs = s->history_size;
-    const double dt = s->dt, v_char = s->models.characteristic_velocity;
+    const double dt = s->dt, v_char = s->models.characteristic_velocity, fn_floor = s->models.fn_floor;
     const material_table *mt = &s->materials;
     double max_overlap = 0.0;
 
@@ -59,8 +59,8 @@ static ALWAYS_INLINE void pair_loop(dem_system *s, const enum normal_model norma
             const double vn = vr[0] * en[0] + vr[1] * en[1] + vr[2] * en[2];
 
             normal_result n;
-            if (normal == NORMAL_HERTZ) n = normal_hertz(c, delta, r_eff, m_eff, vn);
-            else n = normal_hooke(c, delta, r_eff, m_eff, vn, v_char);
+            if (normal == NORMAL_HERTZ) n = normal_hertz(c, delta, r_eff, m_eff, vn, fn_floor);
+            else n = normal_hooke(c, delta, r_eff, m_eff, vn, v_char, fn_floor);
 
             double fc[3] = {n.fn * en[0], n.fn * en[1], n.fn * en[2]};
             if (tangential == TANGENTIAL_HISTORY) {

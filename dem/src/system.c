@@ -13,6 +13,7 @@ void system_init(dem_system *s)
     s->models.normal = NORMAL_HERTZ;
     s->models.tangential = TANGENTIAL_HISTORY;
     s->models.characteristic_velocity = 1.0;
+    s->models.fn_floor = -INFINITY;
     s->max_overlap_fraction = 0.2;
     neighbour_init(&s->nlist, 0.0, 20, 0);
 }

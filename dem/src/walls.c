@@ -82,7 +82,7 @@ static ALWAYS_INLINE void wall_loop(dem_system *s, const enum normal_model norma
 {
     particles *p = &s->p;
     const int hs = s->history_size;
-    const double dt = s->dt, v_char = s->models.characteristic_velocity;
+    const double dt = s->dt, v_char = s->models.characteristic_velocity, fn_floor = s->models.fn_floor;
     double max_overlap = 0.0;
     for (int k = 0; k < s->nwalls; k++) {
         const wall *wl = &s->walls[k];
@@ -101,8 +101,8 @@ static ALWAYS_INLINE void wall_loop(dem_system *s, const enum normal_model norma
             const double *vi = p->v[i];
             const double vn = vi[0] * en[0] + vi[1] * en[1] + vi[2] * en[2];
             normal_result n;
-            if (normal == NORMAL_HERTZ) n = normal_hertz(c, delta, ri, mi, vn);
-            else n = normal_hooke(c, delta, ri, mi, vn, v_char);
+            if (normal == NORMAL_HERTZ) n = normal_hertz(c, delta, ri, mi, vn, fn_floor);
+            else n = normal_hooke(c, delta, ri, mi, vn, v_char, fn_floor);
             double fc[3] = {n.fn * en[0], n.fn * en[1], n.fn * en[2]};
             if (tangential == TANGENTIAL_HISTORY) {
                 const double cr = ri - 0.5 * delta;

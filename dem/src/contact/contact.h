@@ -20,6 +20,7 @@ typedef struct contact_models {
     enum rolling_model rolling;
     enum surface_model surface;
     double characteristic_velocity;   /* [m/s], hooke's stiffness */
+    double fn_floor;                  /* 0 with limitForce (no pull from the dashpot), else -inf */
 } contact_models;
 
 extern const char *const normal_model_names[];

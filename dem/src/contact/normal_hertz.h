@@ -2,7 +2,8 @@
  * the impact speed (Tsuji et al. 1992, as LIGGGHTS' hertz model):
  *   kn = 4/3 Y* sqrt(R* d),  kt = 8 G* sqrt(R* d),
  *   gamma_n = -2 sqrt(5/6) beta sqrt(2 Y* sqrt(R* d) m*),  gamma_t likewise with kt,
- *   Fn = kn d - gamma_n vn          (vn < 0 while approaching). */
+ *   Fn = kn d - gamma_n vn          (vn < 0 while approaching),
+ * and with limitForce Fn >= 0 (fn_floor 0; else -inf). */
 #ifndef DEM_NORMAL_HERTZ_H
 #define DEM_NORMAL_HERTZ_H
 
@@ -11,7 +12,7 @@
 #include "contact.h"
 
 static inline normal_result normal_hertz(const pair_coeffs *c, double delta, double r_eff,
-                                         double m_eff, double vn)
+                                         double m_eff, double vn, double fn_floor)
 {
     const double sqrt_five_sixths = 0.91287092917527685576;
     const double a = sqrt(r_eff * delta);                  /* contact radius */
@@ -20,7 +21,7 @@ static inline normal_result normal_hertz(const pair_coeffs *c, double delta, dou
     const double kn = (2.0 / 3.0) * sn;
     const double gamma_n = -2.0 * sqrt_five_sixths * c->beta * sqrt(sn * m_eff);
     normal_result r;
-    r.fn = kn * delta - gamma_n * vn;
+    r.fn = fmax(kn * delta - gamma_n * vn, fn_floor);
     r.kt = st;
     r.gammat = -2.0 * sqrt_five_sixths * c->beta * sqrt(st * m_eff);
     return r;

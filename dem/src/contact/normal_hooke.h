@@ -2,7 +2,7 @@
  * velocity V (the Hertz peak overlap at V gives the same peak force):
  *   kn = 16/15 sqrt(R*) Y* (15 m* V^2 / (16 sqrt(R*) Y*))^(1/5),  kt = kn,
  *   gamma_n = sqrt(4 m* kn / (1 + (pi / ln e)^2)),  gamma_t = gamma_n,
- *   Fn = kn d - gamma_n vn.
+ *   Fn = kn d - gamma_n vn, and with limitForce Fn >= 0 (fn_floor 0; else -inf).
  * For the linear oscillator this damping gives exactly restitution e when the contact ends at
  * zero overlap. */
 #ifndef DEM_NORMAL_HOOKE_H
@@ -19,13 +19,14 @@ static inline double hooke_stiffness(const pair_coeffs *c, double r_eff, double 
 }
 
 static inline normal_result normal_hooke(const pair_coeffs *c, double delta, double r_eff,
-                                         double m_eff, double vn, double v_char)
+                                         double m_eff, double vn, double v_char,
+                                         double fn_floor)
 {
     const double kn = hooke_stiffness(c, r_eff, m_eff, v_char);
     const double pi_over_log_e = M_PI / c->log_e;   /* e = 1: -inf, gamma_n = 0 */
     const double gamma_n = sqrt(4.0 * m_eff * kn / (1.0 + pi_over_log_e * pi_over_log_e));
     normal_result r;
-    r.fn = kn * delta - gamma_n * vn;
+    r.fn = fmax(kn * delta - gamma_n * vn, fn_floor);
     r.kt = kn;
     r.gammat = gamma_n;
     return r;
