@@ -16,6 +16,18 @@ void dem_fatal(const char *fmt, ...)
     exit(1);
 }
 
+void dem_fatal_at(const char *where, const char *fmt, ...)
+{
+    va_list ap;
+    fflush(stdout);
+    fprintf(stderr, "%s: error: ", where);
+    va_start(ap, fmt);
+    vfprintf(stderr, fmt, ap);
+    va_end(ap);
+    fputc('\n', stderr);
+    exit(1);
+}
+
 void dem_warning(const char *fmt, ...)
 {
     va_list ap;

@@ -5,6 +5,8 @@
 #include <stddef.h>
 
 void dem_fatal(const char *fmt, ...) __attribute__((format(printf, 1, 2), noreturn));
+/* Same, as "<where>: error: ..." (where = "file:line"), like the dictionary's errors. */
+void dem_fatal_at(const char *where, const char *fmt, ...) __attribute__((format(printf, 2, 3), noreturn));
 void dem_warning(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 void *dem_malloc(size_t bytes);                 /* fatal on failure */
 void *dem_calloc(size_t n, size_t size);

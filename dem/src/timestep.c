@@ -83,9 +83,9 @@ void timestep_check(const dem_system *s, double max_velocity, int override, cons
                     s->dt, lim.largest_safe_dt);
         return;
     }
-    dem_fatal("%s: key 'timeStep': %g s is too large: the largest safe step is %.3g s "
+    dem_fatal_at(source, "key 'timeStep': %g s is too large: the largest safe step is %.3g s "
               "(%.2f x Rayleigh time %.3g s of '%s', %.2f x contact time %.3g s of %s at "
               "maxExpectedVelocity %g m/s). Lower timeStep, or set timeStepOverride true to run anyway.",
-              source, s->dt, lim.largest_safe_dt, RAYLEIGH_FRACTION, lim.rayleigh_time,
+              s->dt, lim.largest_safe_dt, RAYLEIGH_FRACTION, lim.rayleigh_time,
               lim.rayleigh_material, CONTACT_FRACTION, lim.contact_time, lim.contact_pair, max_velocity);
 }

@@ -1,0 +1,38 @@
+#!/bin/bash
+# Bad input must stop demRun with exit status 1 and a message that names the file, the line
+# and the key; never a crash (signal) and never a silent run. Usage: check_errors.sh <demRun>
+demRun=$1
+here=$(cd "$(dirname "$0")" && pwd)
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+passed=0 failed=0
+
+# name | sed expression applied to base.demProperties | text the error must contain (grep -E)
+cases=(
+  "missing_semicolon|s/^timeStep       1e-5;/timeStep       1e-5/|demProperties:3: error: .*timeStep"
+  "unknown_key|s/^skin /skn /|demProperties:7: error: unknown key 'skn'.*did you mean 'skin'"
+  "negative_diameter|s/value 2e-3;/value -2e-3;/|demProperties:20: error: key 'value'.*-2e-3"
+  "timestep_10x|s/^timeStep       1e-5;/timeStep       1e-4;/|demProperties:3: error: key 'timeStep'.*largest safe step"
+  "unknown_model|s/normal hertz;/normal herz;/|demProperties:10: error: key 'normal'.*hertz"
+  "missing_material|s/material glass;$/material steel;/|demProperties:19: error: key 'material'.*steel"
+  "bad_vector|s/gravity        (0 0 -9.81);/gravity        (0 -9.81);/|demProperties:6: error: key 'gravity'"
+  "unbalanced_brace|s/^domain { min/domain { { min/|demProperties:8: error"
+  "blow_up|s/^timeStep       1e-5;/timeStep       5e-4; timeStepOverride true; endTime 1;/;/^endTime /d|blew up|left the domain"
+)
+for c in "${cases[@]}"; do
+    IFS='|' read -r name expr expect <<< "$c"
+    mkdir -p "$work/$name/constant"
+    sed -e "$expr" "$here/base.demProperties" > "$work/$name/constant/demProperties"
+    "$demRun" "$work/$name" > "$work/$name.out" 2> "$work/$name.err"
+    status=$?
+    if [ $status -eq 1 ] && grep -qE "$expect" "$work/$name.err"; then
+        echo "PASS $name: $(grep -m1 -E 'error' "$work/$name.err")"
+        passed=$((passed + 1))
+    else
+        echo "FAIL $name: exit status $status, expected 1 and stderr matching: $expect"
+        sed 's/^/    /' "$work/$name.err" | head -5
+        failed=$((failed + 1))
+    fi
+done
+echo "bad input: $passed passed, $failed failed"
+[ $failed -eq 0 ]
