@@ -27,6 +27,15 @@ static void usage(void)
     exit(2);
 }
 
+static long last_written_step = -1;
+
+static void write_snapshot(particle_writer *w, const dem_system *s)
+{
+    if (s->step == last_written_step) return;
+    io_write_snapshot(w, &s->p, s->time, s->step);
+    last_written_step = s->step;
+}
+
 /* Run nsteps, writing snapshots every write_every steps (0: none) and progress lines. */
 static void run_steps(dem_system *s, long nsteps, long write_every, particle_writer *w,
                       double progress_interval)
@@ -35,7 +44,7 @@ static void run_steps(dem_system *s, long nsteps, long write_every, particle_wri
     double next_report = start + progress_interval;
     for (long k = 1; k <= nsteps; k++) {
         system_step(s);
-        if (write_every > 0 && s->step % write_every == 0) io_write_snapshot(w, &s->p, s->time, s->step);
+        if (write_every > 0 && s->step % write_every == 0) write_snapshot(w, s);
         if (progress_interval > 0 && (k & 63) == 0) {
             const double now = wall_clock();
             if (now >= next_report) {
@@ -90,7 +99,8 @@ int main(int argc, char **argv)
     system_setup(&s);
 
     particle_writer *w = io_open_writer(base, restart);
-    if (!restart) io_write_snapshot(w, &s.p, s.time, s.step);
+    if (restart) last_written_step = s.step;
+    else write_snapshot(w, &s);
 
     const double t0 = wall_clock();
     long total_steps = 0;
@@ -116,7 +126,7 @@ int main(int argc, char **argv)
         total_steps = nsteps;
     }
     system_check_health(&s);
-    io_write_snapshot(w, &s.p, s.time, s.step);
+    write_snapshot(w, &s);
     io_close_writer(w);
     const double secs = wall_clock() - t0;
     printf("done: t = %g s, %ld steps in %.2f s wall (%.3g particle-steps/s), %ld neighbour "
