@@ -4,7 +4,7 @@
  *    tolerance 1 %. That identity needs Fn >= 0 throughout (friction acts on |Fn|, while the
  *    normal impulse counts the dashpot's pull at the end of the contact with its sign), so it is
  *    checked with limitForce on; without it, for e = 0.9 where the pull is small.
- *  - With arguments `E nu rho r e mu vn vt` it prints the rebound (RESULT vx/vz/omega_y) for
+ *  - With arguments `E nu rho r e mu vn vt [steps per contact]` it prints the rebound (RESULT vx/vz/omega_y) for
  *    the comparison with LIGGGHTS in the sticking regime (test_liggghts_oblique.sh). */
 #include <stdlib.h>
 
@@ -12,10 +12,11 @@
 
 int main(int argc, char **argv)
 {
-    if (argc == 9) {
+    if (argc == 9 || argc == 10) {
         const impact_spec sp = {atof(argv[1]), atof(argv[2]), atof(argv[3]), atof(argv[4]), atof(argv[5]),
                                 atof(argv[6]), NORMAL_HERTZ, TANGENTIAL_HISTORY, 1.0, 1,
-                                atof(argv[7]), atof(argv[8]), 2000.0, 0};
+                                atof(argv[7]), atof(argv[8]),
+                                argc == 10 ? atof(argv[9]) : 2000.0, 0};
         const impact_result res = run_impact(&sp);
         printf("RESULT vx %.10g\nRESULT vz %.10g\nRESULT omega_y %.10g\n", res.vt_after, res.vn_after, res.omega_after);
         return 0;
