@@ -133,6 +133,7 @@ int main(int argc, char **argv)
            "builds, %ld sorts, kinetic energy %.6g J\n",
            s.time, total_steps, secs, secs > 0 ? (double)total_steps * s.p.n / secs : 0.0,
            s.nlist.builds, s.nlist.sorts, system_kinetic_energy(&s));
+    printf("neighbour list: %.2f pairs per particle (skin %g m)\n", s.p.n ? (double)s.nlist.npairs / s.p.n : 0.0, s.nlist.skin);
     system_free(&s);
     return 0;
 }

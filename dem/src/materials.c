@@ -22,6 +22,7 @@ void materials_set_pair(material_table *t, int ti, int tj, double restitution, d
     c.log_e = log(restitution);
     c.beta = c.log_e / sqrt(c.log_e * c.log_e + M_PI * M_PI);
     c.friction = friction;
+    c.sqrt_st_over_sn = sqrt(4.0 * c.G_eff / c.Y_eff);
     t->pair[ti * DEM_MAX_TYPES + tj] = c;
     t->pair[tj * DEM_MAX_TYPES + ti] = c;
 }

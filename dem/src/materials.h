@@ -21,6 +21,7 @@ typedef struct pair_coeffs {
     double beta;             /* ln(e) / sqrt(ln(e)^2 + pi^2), Hertz damping [-] */
     double log_e;            /* ln(e), Hooke damping [-] */
     double friction;         /* Coulomb mu [-] */
+    double sqrt_st_over_sn;  /* sqrt(4 G* / Y*): Hertz gamma_t over gamma_n [-] */
 } pair_coeffs;
 
 typedef struct material_table {

@@ -16,7 +16,7 @@ void neighbour_init(neighbour_list *nl, double skin, int sort_interval, int hist
 
 void neighbour_free(neighbour_list *nl)
 {
-    free(nl->start); free(nl->partner); free(nl->history); free(nl->x_at_build);
+    free(nl->start); free(nl->partner); free(nl->history); free(nl->touching); free(nl->x_at_build);
     free(nl->cell_start); free(nl->cell_of); free(nl->cell_order);
     memset(nl, 0, sizeof *nl);
 }
@@ -155,6 +155,8 @@ static void transfer_history(neighbour_list *nl, const int *old_start, const int
     const int hs = nl->history_size;
     nl->history = dem_realloc(nl->history, (size_t)(nl->capacity ? nl->capacity : 1) * hs * sizeof(double));
     memset(nl->history, 0, (size_t)nl->npairs * hs * sizeof(double));
+    nl->touching = dem_realloc(nl->touching, (size_t)(nl->capacity ? nl->capacity : 1));
+    memset(nl->touching, 0, (size_t)nl->npairs);
     if (!old_history || hs == 0) return;
     for (int i = 0; i < nl->rows; i++) {
         for (int k = nl->start[i]; k < nl->start[i + 1]; k++) {
@@ -165,6 +167,7 @@ static void transfer_history(neighbour_list *nl, const int *old_start, const int
             for (int m = old_start[a]; m < old_start[a + 1]; m++) {
                 if (old_partner[m] == b) {
                     memcpy(nl->history + (size_t)k * hs, old_history + (size_t)m * hs, hs * sizeof(double));
+                    nl->touching[k] = 1;   /* the force loop clears it if the contact is over */
                     break;
                 }
             }

@@ -16,6 +16,7 @@ typedef struct neighbour_list {
     int *start;
     int *partner;
     double *history;             /* history_size doubles per pair */
+    unsigned char *touching;     /* per pair: in contact at the last force computation */
     long npairs, capacity;
     int rows;                    /* particles the list was built for */
     vec3 *x_at_build;            /* positions at the last build */

@@ -125,14 +125,14 @@ static ALWAYS_INLINE void wall_loop(dem_system *s, const enum normal_model norma
 
 #define KERNEL(NAME, NORMAL, TANGENTIAL) \
     static void NAME(dem_system *s) { wall_loop(s, NORMAL, TANGENTIAL); }
-KERNEL(hooke_none, NORMAL_HOOKE, TANGENTIAL_NONE)
-KERNEL(hooke_history, NORMAL_HOOKE, TANGENTIAL_HISTORY)
-KERNEL(hertz_none, NORMAL_HERTZ, TANGENTIAL_NONE)
-KERNEL(hertz_history, NORMAL_HERTZ, TANGENTIAL_HISTORY)
+KERNEL(wall_hooke_none, NORMAL_HOOKE, TANGENTIAL_NONE)
+KERNEL(wall_hooke_history, NORMAL_HOOKE, TANGENTIAL_HISTORY)
+KERNEL(wall_hertz_none, NORMAL_HERTZ, TANGENTIAL_NONE)
+KERNEL(wall_hertz_history, NORMAL_HERTZ, TANGENTIAL_HISTORY)
 
 typedef void (*wall_kernel)(dem_system *);
 static const wall_kernel kernels[NORMAL_COUNT][TANGENTIAL_COUNT] = {
-    {hooke_none, hooke_history}, {hertz_none, hertz_history}};
+    {wall_hooke_none, wall_hooke_history}, {wall_hertz_none, wall_hertz_history}};
 
 void walls_add_forces(dem_system *s)
 {

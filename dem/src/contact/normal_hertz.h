@@ -20,10 +20,11 @@ static inline normal_result normal_hertz(const pair_coeffs *c, double delta, dou
     const double st = 8.0 * c->G_eff * a;
     const double kn = (2.0 / 3.0) * sn;
     const double gamma_n = -2.0 * sqrt_five_sixths * c->beta * sqrt(sn * m_eff);
+    const double fn = kn * delta - gamma_n * vn;
     normal_result r;
-    r.fn = fmax(kn * delta - gamma_n * vn, fn_floor);
+    r.fn = fn > fn_floor ? fn : fn_floor;
     r.kt = st;
-    r.gammat = -2.0 * sqrt_five_sixths * c->beta * sqrt(st * m_eff);
+    r.gammat = gamma_n * c->sqrt_st_over_sn;    /* sqrt(st m*) = sqrt(sn m*) sqrt(st/sn) */
     return r;
 }
 

@@ -26,7 +26,8 @@ static inline normal_result normal_hooke(const pair_coeffs *c, double delta, dou
     const double pi_over_log_e = M_PI / c->log_e;   /* e = 1: -inf, gamma_n = 0 */
     const double gamma_n = sqrt(4.0 * m_eff * kn / (1.0 + pi_over_log_e * pi_over_log_e));
     normal_result r;
-    r.fn = fmax(kn * delta - gamma_n * vn, fn_floor);
+    const double fn = kn * delta - gamma_n * vn;
+    r.fn = fn > fn_floor ? fn : fn_floor;
     r.kt = kn;
     r.gammat = gamma_n;
     return r;

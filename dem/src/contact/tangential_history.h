@@ -30,10 +30,12 @@ static inline void tangential_history(double *restrict s, const double en[3], co
     const double ft2 = ft[0] * ft[0] + ft[1] * ft[1] + ft[2] * ft[2];
     const double f_coulomb = mu * fabs(n.fn);
     if (ft2 > f_coulomb * f_coulomb) {
-        const double ratio = f_coulomb / sqrt(ft2);
+        const double ft_mag = sqrt(ft2);
+        const double q = 1.0 / (ft_mag * n.kt);   /* one division for the ratio and 1/kt */
+        const double ratio = f_coulomb * n.kt * q, inv_kt = ft_mag * q;
         for (int d = 0; d < 3; d++) {
             ft[d] *= ratio;
-            s[d] = -ft[d] / n.kt;
+            s[d] = -ft[d] * inv_kt;
         }
     }
 }
