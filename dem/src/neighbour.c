@@ -21,18 +21,6 @@ void neighbour_free(neighbour_list *nl)
     memset(nl, 0, sizeof *nl);
 }
 
-int neighbour_needs_rebuild(const neighbour_list *nl, const particles *p)
-{
-    if (nl->rows != p->n) return 1;
-    const double limit = 0.25 * nl->skin * nl->skin;   /* (skin/2)^2 */
-    const vec3 *restrict x = p->x, *restrict x0 = nl->x_at_build;
-    for (int i = 0; i < p->n; i++) {
-        const double dx = x[i][0] - x0[i][0], dy = x[i][1] - x0[i][1], dz = x[i][2] - x0[i][2];
-        if (dx * dx + dy * dy + dz * dz > limit) return 1;
-    }
-    return 0;
-}
-
 /* Wrap periodic coordinates into the box; stop if a particle left a closed side. */
 static void wrap_and_check_domain(dem_system *s)
 {

@@ -1,7 +1,7 @@
 /* Linked cells and a half Verlet list with skin. Each pair is stored once (under one of its
  * particles), with its contact history beside it; the history survives rebuilds and sorts.
  * The list is rebuilt only when some particle has moved more than half the skin since the
- * last build. Every sortInterval-th rebuild first re-orders the particles by cell, so that
+ * last build (system_step measures that while it moves the particles). Every sortInterval-th rebuild first re-orders the particles by cell, so that
  * neighbours are near each other in memory. */
 #ifndef DEM_NEIGHBOUR_H
 #define DEM_NEIGHBOUR_H
@@ -32,8 +32,6 @@ typedef struct neighbour_list {
 struct dem_system;
 void neighbour_init(neighbour_list *nl, double skin, int sort_interval, int history_size);
 void neighbour_free(neighbour_list *nl);
-/* True when a rebuild is due. */
-int neighbour_needs_rebuild(const neighbour_list *nl, const particles *p);
 /* Rebuild (sorting first when due); permutes the per-particle wall histories along. */
 void neighbour_rebuild(struct dem_system *s);
 

@@ -59,6 +59,13 @@ void system_setup(dem_system *s)
     system_compute_forces(s);
 }
 
+static void add_contact_forces(dem_system *s)
+{
+    s->max_overlap_seen = 0.0;
+    pair_forces_add(s);
+    walls_add_forces(s);
+}
+
 void system_compute_forces(dem_system *s)
 {
     particles *p = &s->p;
@@ -68,9 +75,7 @@ void system_compute_forces(dem_system *s)
             p->torque[i][d] = 0.0;
         }
     }
-    s->max_overlap_seen = 0.0;
-    pair_forces_add(s);
-    walls_add_forces(s);
+    add_contact_forces(s);
 }
 
 static void half_kick(particles *p, double dt)
@@ -85,14 +90,41 @@ static void half_kick(particles *p, double dt)
     }
 }
 
+/* First half of the velocity-Verlet step in one pass over the particles: half kick, drift,
+ * the displacement since the last list build, and the forces reset to gravity + external
+ * (the old forces are not needed after the kick). Returns the largest displacement squared. */
+static double kick_drift_reset(dem_system *s)
+{
+    particles *p = &s->p;
+    const double dt = s->dt, h = 0.5 * dt, g[3] = {s->gravity[0], s->gravity[1], s->gravity[2]};
+    const vec3 *restrict x0 = s->nlist.x_at_build;
+    vec3 *restrict x = p->x, *restrict v = p->v, *restrict w = p->omega, *restrict f = p->f, *restrict t = p->torque;
+    const vec3 *restrict f_ext = p->f_ext;
+    const double *restrict inv_mass = p->inv_mass, *restrict inv_inertia = p->inv_inertia, *restrict mass = p->mass;
+    const int listed = p->n < s->nlist.rows ? p->n : s->nlist.rows;   /* added since: not yet */
+    double max_d2 = 0.0;
+    for (int i = 0; i < p->n; i++) {
+        double d2 = 0.0;
+        for (int d = 0; d < 3; d++) {
+            v[i][d] += h * inv_mass[i] * f[i][d];
+            w[i][d] += h * inv_inertia[i] * t[i][d];
+            x[i][d] += dt * v[i][d];
+            const double moved = i < listed ? x[i][d] - x0[i][d] : 0.0;
+            d2 += moved * moved;
+            f[i][d] = mass[i] * g[d] + f_ext[i][d];
+            t[i][d] = 0.0;
+        }
+        max_d2 = d2 > max_d2 ? d2 : max_d2;
+    }
+    return max_d2;
+}
+
 void system_step(dem_system *s)
 {
     particles *p = &s->p;
-    half_kick(p, s->dt);
-    for (int i = 0; i < p->n; i++)
-        for (int d = 0; d < 3; d++) p->x[i][d] += s->dt * p->v[i][d];
-    if (neighbour_needs_rebuild(&s->nlist, p)) rebuild(s);
-    system_compute_forces(s);
+    const double max_d2 = kick_drift_reset(s);
+    if (p->n != s->nlist.rows || max_d2 > 0.25 * s->nlist.skin * s->nlist.skin) rebuild(s);
+    add_contact_forces(s);
     half_kick(p, s->dt);
     s->time += s->dt;
     s->step++;
