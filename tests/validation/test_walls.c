@@ -5,7 +5,9 @@
  *  - cylinder inside and outside: a radial impact rebounds with the same restitution as on a
  *    plane (within 1 %: the cylinder is treated as locally flat, R* = R_i);
  *  - periodic: two spheres colliding across the periodic boundary rebound exactly as the same
- *    collision away from it (within 1e-9 relative). */
+ *    collision away from it (within 1e-9 relative);
+ *  - external force: a constant per-particle force F (as the coupling's drag will be) moves a free
+ *    sphere by F t^2 / (2 m), which velocity Verlet reproduces to round-off (1e-9). */
 #include "harness.h"
 #include "rng.h"
 
@@ -141,8 +143,24 @@ static double periodic_collision(double shift)
     return NAN;
 }
 
+static void external_force(void)
+{
+    dem_system s;
+    make_system(&s, 5e6, 0.45, 2500, 0.5, 0.5, NORMAL_HERTZ, TANGENTIAL_HISTORY, 1.0);
+    const int i = add_sphere(&s, 0, 0, 0, 0, 0, 0, 1e-3);
+    s.p.f_ext[i][0] = 2e-6;   /* N */
+    s.dt = 1e-5;
+    s.nlist.skin = 1e-3;
+    system_setup(&s);
+    for (int k = 0; k < 10000; k++) system_step(&s);
+    const double t = s.time, expected = 0.5 * 2e-6 / s.p.mass[i] * t * t;
+    check_rel("external force: displacement F t^2 / (2 m)", s.p.x[i][0], expected, 1e-9);
+    system_free(&s);
+}
+
 int main(void)
 {
+    external_force();
     bounded_plane();
     box();
     cylinder();

@@ -1,4 +1,4 @@
-"""Check the settled column against random-packing references and draw it.
+"""Check the settled column (glass and steel beads) against random-packing references and draw it.
 
 Solid fraction of the bed: particle volume inside the slab 0.2 h < z < 0.8 h (sphere-slab
 intersections counted exactly) over the slab's volume, with the bed height h from the total
@@ -37,7 +37,9 @@ def main(path, png):
         r = last["radius"][...]
         n0 = int(first.attrs["n"])
         t = float(last.attrs["time"])
-    rho, g, column_radius = 2500.0, 9.81, 0.025
+        kind = last["type"][...]
+    rho = np.where(kind == 0, 2500.0, 7800.0)   # glass, steel (materials in demProperties order)
+    g, column_radius = 9.81, 0.025
     area = np.pi * column_radius ** 2
     volume = 4.0 / 3.0 * np.pi * r ** 3
     h = 2.0 * np.mean(x[:, 2])
@@ -47,6 +49,7 @@ def main(path, png):
     mass = rho * volume
     ke = 0.5 * (mass * (v ** 2).sum(axis=1)).sum() / len(r)
     ke_scale = np.mean(mass) * g * 2.0 * np.mean(r)
+    steel_height = np.mean(x[kind == 1, 2]) / np.mean(x[kind == 0, 2])
 
     failed = 0
 
@@ -61,21 +64,21 @@ def main(path, png):
     check("solid_fraction", phi, 0.55, 0.64)
     check("kinetic_energy_per_particle_over_mgd", ke / ke_scale, 0.0, 1e-3)
     check("particles_kept", len(r), n0, n0)
+    print(f"mean height of steel over mean height of glass: {steel_height:.3f} (no segregation: 1)")
 
     fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(9, 6), gridspec_kw={"width_ratios": [1, 1.2]})
     front = x[:, 1] < 0.0
     d = 2000 * r[front]
+    colours = np.where(kind[front] == 0, "#6fa8dc", "#555555")
     sc = EllipseCollection(d, d, np.zeros_like(d), units="xy", offsets=1000 * x[front][:, [0, 2]],
-                           offset_transform=ax1.transData, cmap="viridis", edgecolors="k", linewidths=0.2)
-    sc.set_array(d)
+                           offset_transform=ax1.transData, facecolors=colours, edgecolors="k", linewidths=0.2)
     ax1.add_collection(sc)
     ax1.set_aspect("equal")
     ax1.set_xlim(-26, 26)
     ax1.set_ylim(0, max(60, 1100 * h))
     ax1.set_xlabel("x [mm]")
     ax1.set_ylabel("z [mm]")
-    ax1.set_title(f"front half, t = {t:.2f} s")
-    fig.colorbar(sc, ax=ax1, label="diameter [mm]", shrink=0.7)
+    ax1.set_title(f"front half, t = {t:.2f} s\nglass (blue), steel (grey)")
     edges = np.linspace(0.0, 1.2 * h, 25)
     prof = [slab_volume(x[:, 2], r, a, b).sum() / (area * (b - a)) for a, b in zip(edges[:-1], edges[1:])]
     ax2.step(prof, 1000 * edges[:-1], where="post", label="measured")
