@@ -111,6 +111,19 @@ static int material_of(const dict *d, const material_table *t)
     return k;
 }
 
+/* axis, centre (the two coordinates across the axis) and radius of a cylinder wall or region */
+static void read_cylinder(const dict *d, int *axis, double centre[2], double *radius)
+{
+    *axis = dict_choice(d, "axis", axis_names);
+    double *c;
+    if (dict_scalar_list(d, "centre", &c) != 2)
+        dict_fatal(d, "centre", "give the two coordinates across the axis, e.g. (0 0)");
+    centre[0] = c[0];
+    centre[1] = c[1];
+    free(c);
+    *radius = dict_scalar(d, "radius", 1e-9, 1e6);
+}
+
 static wall *new_wall(dem_system *s, const dict *d, const char *name)
 {
     if (s->nwalls == DEM_MAX_WALLS) dict_fatal_here(d, "at most %d wall primitives (a box counts 6)", DEM_MAX_WALLS);
@@ -168,12 +181,7 @@ static void read_walls(const dict *root, dem_system *s)
             wall *w = new_wall(s, e, name);
             w->kind = WALL_CYLINDER;
             w->material = mat;
-            w->axis = dict_choice(e, "axis", axis_names);
-            double *c;
-            if (dict_scalar_list(e, "centre", &c) != 2) dict_fatal(e, "centre", "give the two coordinates across the axis, e.g. (0 0)");
-            w->centre[0] = c[0]; w->centre[1] = c[1];
-            free(c);
-            w->radius = dict_scalar(e, "radius", 1e-9, 1e6);
+            read_cylinder(e, &w->axis, w->centre, &w->radius);
             static const char *const sides[] = {"inside", "outside", 0};
             w->inside = dict_choice_opt(e, "side", sides, 0) == 0;
             w->axial_min = dict_scalar_opt(e, "axialMin", -INFINITY, -INFINITY, INFINITY);
@@ -225,12 +233,7 @@ static void read_region(const dict *e, insertion *ins)
         for (int k = 0; k < 3; k++)
             if (!(ins->max[k] > ins->min[k])) dict_fatal(r, "max", "max must exceed min in every direction");
     } else {
-        ins->axis = dict_choice(r, "axis", axis_names);
-        double *c;
-        if (dict_scalar_list(r, "centre", &c) != 2) dict_fatal(r, "centre", "give the two coordinates across the axis, e.g. (0 0)");
-        ins->centre[0] = c[0]; ins->centre[1] = c[1];
-        free(c);
-        ins->radius = dict_scalar(r, "radius", 1e-9, 1e6);
+        read_cylinder(r, &ins->axis, ins->centre, &ins->radius);
         ins->min[ins->axis] = dict_scalar(r, "axialMin", -1e6, 1e6);
         ins->max[ins->axis] = dict_scalar(r, "axialMax", ins->min[ins->axis], 1e6);
     }
