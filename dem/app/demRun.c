@@ -11,6 +11,7 @@
 #include "case.h"
 #include "error.h"
 #include "io.h"
+#include "restart.h"
 #include "system.h"
 #include "timestep.h"
 
@@ -32,7 +33,10 @@ static long last_written_step = -1;
 static void write_snapshot(particle_writer *w, const dem_system *s)
 {
     if (s->step == last_written_step) return;
-    io_write_snapshot(w, &s->p, s->time, s->step);
+    contact_state cs;
+    restart_save_contacts(s, &cs);
+    io_write_snapshot_contacts(w, &s->p, s->time, s->step, &cs);
+    contact_state_free(&cs);
     last_written_step = s->step;
 }
 
@@ -79,9 +83,11 @@ int main(int argc, char **argv)
 
     char base[4200];
     snprintf(base, sizeof base, "%s/particles", case_dir);
+    contact_state saved;
+    memset(&saved, 0, sizeof saved);
     if (restart) {
         long step;
-        if (io_read_last_snapshot(base, &s.p, &s.time, &step) != 0)
+        if (io_read_last_snapshot_contacts(base, &s.p, &s.time, &step, &saved) != 0)
             dem_fatal("%s.h5: no complete snapshot to restart from", base);
         s.step = step;
         for (int i = 0; i < s.p.n; i++) {
@@ -91,12 +97,12 @@ int main(int argc, char **argv)
             particles_set_mass(&s.p, i, s.materials.mat[s.p.type[i]].density);
             if (s.p.id[i] >= s.next_id) s.next_id = s.p.id[i] + 1;
         }
-        printf("restart from %s.h5 at t = %g s (step %ld), %d particles; contact history starts afresh\n",
-               base, s.time, s.step, s.p.n);
+        printf("restart from %s.h5 at t = %g s (step %ld), %d particles\n", base, s.time, s.step, s.p.n);
     }
     const double vmax = rs.max_expected_velocity > 0 ? rs.max_expected_velocity : case_default_max_velocity(&s);
     timestep_check(&s, vmax, rs.timestep_override, rs.timestep_source);
-    system_setup(&s);
+    restart_setup(&s, restart ? &saved : NULL);
+    contact_state_free(&saved);
 
     particle_writer *w = io_open_writer(base, restart);
     if (restart) last_written_step = s.step;

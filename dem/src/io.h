@@ -9,6 +9,10 @@
  * The file is flushed after each snapshot, so a killed run leaves every snapshot before the
  * one being written readable; a snapshot without `complete` is ignored on restart.
  * <base>.xdmf is rewritten after each snapshot and lists the complete ones.
+ * With contact history (the *_contacts variants) a snapshot also holds /snapshots/<k>/contacts/
+ *       attributes history_size, nwalls; datasets pair_ids (m x 2, int64: the two particle ids),
+ *       pair_history (m x history_size), wall_history (n x nwalls*history_size, particles in the
+ *       snapshot's order), so that a restart continues the contacts where they were.
  */
 #ifndef DEM_IO_H
 #define DEM_IO_H
@@ -17,15 +21,36 @@
 
 typedef struct particle_writer particle_writer;
 
+/* Contact history in a form independent of particle order and neighbour lists. */
+typedef struct contact_state {
+    int history_size;        /* doubles per contact */
+    long npairs;
+    int64_t *pair_ids;       /* 2 per pair */
+    double *pair_history;    /* history_size per pair */
+    int nwalls;
+    double *wall_history;    /* [particle][wall][history_size], particles in snapshot order */
+    int forces_read;         /* reader: p->f and p->torque hold the snapshot's forces */
+} contact_state;
+
+void contact_state_free(contact_state *cs);
+
 /* base: path without extension, e.g. "case/particles". append != 0 keeps existing snapshots
  * (restart); otherwise the files are created anew. Fatal on HDF5 errors, with the path. */
 particle_writer *io_open_writer(const char *base, int append);
 void io_write_snapshot(particle_writer *w, const particles *p, double time, long step);
+/* The same, with the contact history (cs may be NULL). */
+void io_write_snapshot_contacts(particle_writer *w, const particles *p, double time, long step,
+                                const contact_state *cs);
 void io_close_writer(particle_writer *w);
 
 /* Read the last complete snapshot of <base>.h5 into p (p is reset and refilled; masses are
  * left for the caller to set from the materials). Returns 0 on success, -1 when the file has
  * no complete snapshot; fatal when the file cannot be read. */
 int io_read_last_snapshot(const char *base, particles *p, double *time, long *step);
+/* The same, also filling cs with the snapshot's contact history (empty when it has none) and,
+ * when the snapshot has them, p->f and p->torque with its forces (cs->forces_read = 1): the
+ * restarted run then continues without evaluating the contacts a second time at that step. */
+int io_read_last_snapshot_contacts(const char *base, particles *p, double *time, long *step,
+                                   contact_state *cs);
 
 #endif

@@ -404,7 +404,49 @@ static void write_dataset(hid_t group, const char *name, hid_t file_type, hid_t 
     H5Sclose(space);
 }
 
+void contact_state_free(contact_state *cs)
+{
+    free(cs->pair_ids);
+    free(cs->pair_history);
+    free(cs->wall_history);
+    memset(cs, 0, sizeof *cs);
+}
+
+/* A 2-D dataset of doubles or int64 with `cols` columns. */
+static void write_matrix(hid_t group, const char *name, hid_t file_type, hid_t mem_type,
+                         const void *data, int64_t rows, int64_t cols, const char *path)
+{
+    hsize_t dims[2] = {(hsize_t)rows, (hsize_t)cols};
+    hid_t space = chk(H5Screate_simple(2, dims, NULL), path, "cannot create dataspace");
+    hid_t dset = chk(H5Dcreate2(group, name, file_type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+                     path, "cannot create dataset");
+    if (rows > 0 && cols > 0)
+        chk(H5Dwrite(dset, mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), path, "cannot write dataset");
+    H5Dclose(dset);
+    H5Sclose(space);
+}
+
+static void write_contacts(hid_t g, const contact_state *cs, int64_t n, const char *path)
+{
+    hid_t c = chk(H5Gcreate2(g, "contacts", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), path,
+                  "cannot create contacts group");
+    write_scalar_attr(c, "history_size", H5T_STD_I32LE, H5T_NATIVE_INT, &cs->history_size, path);
+    write_scalar_attr(c, "nwalls", H5T_STD_I32LE, H5T_NATIVE_INT, &cs->nwalls, path);
+    write_matrix(c, "pair_ids", H5T_STD_I64LE, H5T_NATIVE_INT64, cs->pair_ids, cs->npairs, 2, path);
+    write_matrix(c, "pair_history", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, cs->pair_history, cs->npairs,
+                 cs->history_size, path);
+    write_matrix(c, "wall_history", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, cs->wall_history, n,
+                 (int64_t)cs->nwalls * cs->history_size, path);
+    H5Gclose(c);
+}
+
 void io_write_snapshot(particle_writer *w, const particles *p, double time, long step)
+{
+    io_write_snapshot_contacts(w, p, time, step, NULL);
+}
+
+void io_write_snapshot_contacts(particle_writer *w, const particles *p, double time, long step,
+                                const contact_state *cs)
 {
     const char *path = w->h5_path;
     char name[32];
@@ -420,9 +462,11 @@ void io_write_snapshot(particle_writer *w, const particles *p, double time, long
     write_dataset(g, "velocity", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, p->v, n, 1, "m/s", path);
     write_dataset(g, "omega", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, p->omega, n, 1, "rad/s", path);
     write_dataset(g, "force", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, p->f, n, 1, "N", path);
+    write_dataset(g, "torque", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, p->torque, n, 1, "N m", path);
     write_dataset(g, "radius", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, p->radius, n, 0, "m", path);
     write_dataset(g, "id", H5T_STD_I64LE, H5T_NATIVE_INT64, p->id, n, 0, NULL, path);
     write_dataset(g, "type", H5T_STD_I32LE, H5T_NATIVE_INT, p->type, n, 0, NULL, path);
+    if (cs && cs->history_size > 0) write_contacts(g, cs, n, path);
 
     const long long step_ll = step;
     write_scalar_attr(g, "time", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &time, path);
@@ -477,7 +521,53 @@ static void read_dataset(hid_t group, const char *name, hid_t mem_type, void *da
     H5Dclose(dset);
 }
 
+/* Rows of a 2-D dataset with `cols` columns (fatal on another shape); data malloc'd. */
+static void *read_matrix(hid_t group, const char *name, hid_t mem_type, size_t elem, int64_t cols,
+                         int64_t *rows, const char *path)
+{
+    hid_t dset = chk(H5Dopen2(group, name, H5P_DEFAULT), path, "cannot open dataset");
+    hid_t space = chk(H5Dget_space(dset), path, "cannot get dataset dataspace");
+    hsize_t dims[2] = {0, 0};
+    if (H5Sget_simple_extent_ndims(space) != 2 || H5Sget_simple_extent_dims(space, dims, NULL) < 0 ||
+        (int64_t)dims[1] != cols)
+        dem_fatal("HDF5 file '%s': dataset 'contacts/%s' has the wrong shape (expected N x %" PRId64 ")",
+                  path, name, cols);
+    *rows = (int64_t)dims[0];
+    void *data = dem_malloc((size_t)(*rows * cols) * elem);
+    if (*rows > 0 && cols > 0)
+        chk(H5Dread(dset, mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), path, "cannot read dataset");
+    H5Sclose(space);
+    H5Dclose(dset);
+    return data;
+}
+
+static void read_contacts(hid_t g, contact_state *cs, int64_t n, const char *path)
+{
+    memset(cs, 0, sizeof *cs);
+    if (!chk(H5Lexists(g, "contacts", H5P_DEFAULT), path, "cannot query contacts group")) return;
+    hid_t c = chk(H5Gopen2(g, "contacts", H5P_DEFAULT), path, "cannot open contacts group");
+    if (!read_scalar_attr(c, "history_size", H5T_NATIVE_INT, &cs->history_size, path) ||
+        !read_scalar_attr(c, "nwalls", H5T_NATIVE_INT, &cs->nwalls, path))
+        dem_fatal("HDF5 file '%s': contacts group without history_size/nwalls", path);
+    int64_t rows;
+    cs->pair_ids = read_matrix(c, "pair_ids", H5T_NATIVE_INT64, sizeof(int64_t), 2, &rows, path);
+    cs->npairs = (long)rows;
+    cs->pair_history = read_matrix(c, "pair_history", H5T_NATIVE_DOUBLE, sizeof(double),
+                                   cs->history_size, &rows, path);
+    if (rows != cs->npairs) dem_fatal("HDF5 file '%s': contacts/pair_history has %" PRId64 " rows for %ld pairs", path, rows, cs->npairs);
+    cs->wall_history = read_matrix(c, "wall_history", H5T_NATIVE_DOUBLE, sizeof(double),
+                                   (int64_t)cs->nwalls * cs->history_size, &rows, path);
+    if (rows != n) dem_fatal("HDF5 file '%s': contacts/wall_history has %" PRId64 " rows for %" PRId64 " particles", path, rows, n);
+    H5Gclose(c);
+}
+
 int io_read_last_snapshot(const char *base, particles *p, double *time, long *step)
+{
+    return io_read_last_snapshot_contacts(base, p, time, step, NULL);
+}
+
+int io_read_last_snapshot_contacts(const char *base, particles *p, double *time, long *step,
+                                   contact_state *cs)
 {
     h5_quiet();
     char *path = str_cat(base, ".h5");
@@ -516,6 +606,14 @@ int io_read_last_snapshot(const char *base, particles *p, double *time, long *st
         memset(p->f, 0, (size_t)n * sizeof *p->f);
         memset(p->torque, 0, (size_t)n * sizeof *p->torque);
         memset(p->f_ext, 0, (size_t)n * sizeof *p->f_ext);
+    }
+    if (cs) {
+        read_contacts(g, cs, n, path);
+        if (chk(H5Lexists(g, "torque", H5P_DEFAULT), path, "cannot query torque dataset")) {
+            read_dataset(g, "force", H5T_NATIVE_DOUBLE, p->f, n, 1, path);
+            read_dataset(g, "torque", H5T_NATIVE_DOUBLE, p->torque, n, 1, path);
+            cs->forces_read = 1;
+        }
     }
     H5Gclose(g);
     chk(H5Fclose(file), path, "cannot close file");

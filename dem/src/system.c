@@ -43,6 +43,13 @@ static void rebuild(dem_system *s)
 
 void system_setup(dem_system *s)
 {
+    system_setup_begin(s);
+    system_setup_finish_list(s);
+    system_compute_forces(s);
+}
+
+void system_setup_begin(dem_system *s)
+{
     s->history_size = contact_history_size(&s->models);
     s->nlist.history_size = s->history_size;
     for (int d = 0; d < 3; d++) {
@@ -55,8 +62,11 @@ void system_setup(dem_system *s)
         s->nlist.skin = s->p.n ? 0.2 * rmin : 1e-3;   /* 10 % of the smallest diameter */
     }
     system_resize_wall_history(s, 0);
+}
+
+void system_setup_finish_list(dem_system *s)
+{
     rebuild(s);
-    system_compute_forces(s);
 }
 
 static void add_contact_forces(dem_system *s)

@@ -41,6 +41,10 @@ void system_free(dem_system *s);
 /* After particles, materials, models, walls are set: allocate histories, build the list,
  * compute the first forces. */
 void system_setup(dem_system *s);
+/* system_setup in two halves, for a restart that fills the wall history in between:
+ * begin sizes histories and the skin; finish_list builds the neighbour list. */
+void system_setup_begin(dem_system *s);
+void system_setup_finish_list(dem_system *s);
 /* Resize the wall history to the current particle count (new entries zeroed). */
 void system_resize_wall_history(dem_system *s, int old_n);
 /* One velocity-Verlet step. */

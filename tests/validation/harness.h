@@ -12,7 +12,7 @@
 static int checks_passed, checks_failed;
 
 /* |measured - reference| <= tol * |reference| */
-static int check_rel(const char *what, double measured, double reference, double tol)
+static inline int check_rel(const char *what, double measured, double reference, double tol)
 {
     const double err = fabs(measured - reference) / fabs(reference);
     const int ok = err <= tol && isfinite(measured);
@@ -22,21 +22,21 @@ static int check_rel(const char *what, double measured, double reference, double
     return ok;
 }
 
-static int check_true(const char *what, int ok)
+static inline int check_true(const char *what, int ok)
 {
     printf("CHECK %-58s %s\n", what, ok ? "PASS" : "FAIL");
     if (ok) checks_passed++; else checks_failed++;
     return ok;
 }
 
-static int finish(const char *name)
+static inline int finish(const char *name)
 {
     printf("%s: %d passed, %d failed\n", name, checks_passed, checks_failed);
     return checks_failed ? 1 : 0;
 }
 
 /* A system with one material (E, nu, rho), given e and mu, models, in a box [-L, L]^3. */
-static void make_system(dem_system *s, double E, double nu, double rho, double e, double mu,
+static inline void make_system(dem_system *s, double E, double nu, double rho, double e, double mu,
                         enum normal_model normal, enum tangential_model tangential, double L)
 {
     system_init(s);
@@ -53,13 +53,13 @@ static void make_system(dem_system *s, double E, double nu, double rho, double e
     s->max_overlap_fraction = 1.0;
 }
 
-static int add_sphere(dem_system *s, double x, double y, double z, double vx, double vy, double vz, double r)
+static inline int add_sphere(dem_system *s, double x, double y, double z, double vx, double vy, double vz, double r)
 {
     const double pos[3] = {x, y, z}, vel[3] = {vx, vy, vz};
     return particles_add(&s->p, pos, vel, r, s->materials.mat[0].density, 0, s->next_id++);
 }
 
-static void add_plane(dem_system *s, double px, double py, double pz, double nx, double ny, double nz)
+static inline void add_plane(dem_system *s, double px, double py, double pz, double nx, double ny, double nz)
 {
     wall *w = &s->walls[s->nwalls++];
     memset(w, 0, sizeof *w);

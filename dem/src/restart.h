@@ -1,0 +1,16 @@
+/* Contact history across a restart: saved by particle ids, so it does not depend on the
+ * particle order or on the neighbour list of the run that wrote it. */
+#ifndef DEM_RESTART_H
+#define DEM_RESTART_H
+
+#include "io.h"
+#include "system.h"
+
+/* Collect the history of every pair in contact and of every particle-wall contact. */
+void restart_save_contacts(const dem_system *s, contact_state *cs);
+/* Set up the system (as system_setup) and put the saved history back onto the same pairs and
+ * walls. A snapshot written with other models or walls cannot be matched: its history is
+ * dropped with a warning. */
+void restart_setup(dem_system *s, const contact_state *cs);
+
+#endif
