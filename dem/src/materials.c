@@ -10,10 +10,20 @@ int materials_find(const material_table *t, const char *name)
     return -1;
 }
 
+void materials_set_models(material_table *t, int ti, int tj, const pair_model_params *m)
+{
+    for (int k = 0; k < 2; k++) {
+        pair_coeffs *c = &t->pair[k ? tj * DEM_MAX_TYPES + ti : ti * DEM_MAX_TYPES + tj];
+        c->m = *m;
+        c->edinburgh_lambda = m->unloading_ratio > 1.0 && m->loading_exponent >= 1.0
+            ? pow(1.0 - 1.0 / m->unloading_ratio, 1.0 / m->loading_exponent) : 0.0;
+    }
+}
+
 void materials_set_pair(material_table *t, int ti, int tj, double restitution, double friction)
 {
     const material *a = &t->mat[ti], *b = &t->mat[tj];
-    pair_coeffs c;
+    pair_coeffs c = {0};
     c.Y_eff = 1.0 / ((1.0 - a->poisson_ratio * a->poisson_ratio) / a->youngs_modulus +
                      (1.0 - b->poisson_ratio * b->poisson_ratio) / b->youngs_modulus);
     c.G_eff = 1.0 / (2.0 * (2.0 - a->poisson_ratio) * (1.0 + a->poisson_ratio) / a->youngs_modulus +

@@ -150,11 +150,13 @@ static void transfer_history(neighbour_list *nl, const int *old_start, const int
         for (int k = nl->start[i]; k < nl->start[i + 1]; k++) {
             int a = old_of_new ? old_of_new[i] : i;
             int b = old_of_new ? old_of_new[nl->partner[k]] : nl->partner[k];
-            if (a > b) { const int t = a; a = b; b = t; }
+            const int flipped = a > b;   /* the old list held the pair as (j, i) */
+            if (flipped) { const int t = a; a = b; b = t; }
             if (a >= old_rows) continue;
             for (int m = old_start[a]; m < old_start[a + 1]; m++) {
                 if (old_partner[m] == b) {
-                    memcpy(nl->history + (size_t)k * hs, old_history + (size_t)m * hs, hs * sizeof(double));
+                    contact_history_copy(nl->history + (size_t)k * hs, old_history + (size_t)m * hs, hs,
+                                         nl->history_antisymmetric, flipped);
                     nl->touching[k] = 1;   /* the force loop clears it if the contact is over */
                     break;
                 }

@@ -12,6 +12,7 @@ typedef struct neighbour_list {
     double skin;                 /* [m] */
     int sort_interval;           /* rebuilds between sorts, 0 = never */
     int history_size;            /* doubles per pair */
+    int history_antisymmetric;   /* leading doubles that change sign when i and j swap */
     /* CSR half list: partners of i are partner[start[i] .. start[i+1]) */
     int *start;
     int *partner;

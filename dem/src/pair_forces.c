@@ -6,8 +6,14 @@
 #include <math.h>
 #include <stddef.h>
 
+#include "contact/cohesion_sjkr.h"
+#include "contact/normal_edinburgh.h"
 #include "contact/normal_hertz.h"
 #include "contact/normal_hooke.h"
+#include "contact/rolling_cdt.h"
+#include "contact/rolling_cdt_jkr.h"
+#include "contact/rolling_epsd.h"
+#include "contact/surface_roughness.h"
 #include "contact/tangential_history.h"
 #include "system.h"
 
@@ -20,7 +26,9 @@
 #define CHUNK 64
 
 static ALWAYS_INLINE void pair_loop(dem_system *s, const enum normal_model normal,
-                                    const enum tangential_model tangential, const int periodic)
+                                    const enum tangential_model tangential,
+                                    const enum rolling_model rolling, const enum cohesion_model cohesion,
+                                    const enum surface_model surface, const int periodic)
 {
     particles *p = &s->p;
     neighbour_list *nl = &s->nlist;
@@ -28,11 +36,17 @@ static ALWAYS_INLINE void pair_loop(dem_system *s, const enum normal_model norma
     vec3 *restrict f = p->f, *restrict t = p->torque;
     const double *restrict rad = p->radius, *restrict mass = p->mass;
     const int *restrict type = p->type;
+    const int64_t *restrict id = p->id;
+    const double *restrict inv_inertia = p->inv_inertia;
     const int *restrict start = nl->start, *restrict partner = nl->partner;
     double *restrict hist = nl->history;
     unsigned char *restrict was_touching = nl->touching;
-    /* doubles of history per pair, a constant for each kernel (the models' own sizes) */
-    const int hs = tangential == TANGENTIAL_HISTORY ? 3 : 0;
+    /* history per pair [tangential][rolling][normal][surface]: constants for each kernel */
+    const int h_roll = tangential_history_size(tangential), h_norm = h_roll + rolling_history_size(rolling);
+    const int h_surf = h_norm + normal_history_size(normal), hs = h_surf + surface_history_size(surface);
+    const int torsion_torque = s->models.torsion_torque;
+    const roughness_params rough = s->models.roughness;
+    const long step = s->step;
     const double dt = s->dt, v_char = s->models.characteristic_velocity, fn_floor = s->models.fn_floor;
     const double period[3] = {s->period[0], s->period[1], s->period[2]};
     const double inv_period[3] = {s->inv_period[0], s->inv_period[1], s->inv_period[2]};
@@ -59,10 +73,10 @@ static ALWAYS_INLINE void pair_loop(dem_system *s, const enum normal_model norma
                 touching[nc] = k;
                 sep[nc][0] = d[0]; sep[nc][1] = d[1]; sep[nc][2] = d[2]; sep[nc][3] = rsq;
                 nc += touch;
-                if (tangential == TANGENTIAL_HISTORY) {   /* a contact that ended forgets */
+                if (hs > 0) {   /* a contact that ended forgets */
                     if (was_touching[k] > touch) {
                         double *h = hist + (size_t)k * hs;
-                        h[0] = h[1] = h[2] = 0.0;
+                        for (int q = 0; q < hs; q++) h[q] = 0.0;
                     }
                     was_touching[k] = (unsigned char)touch;
                 }
@@ -77,29 +91,48 @@ static ALWAYS_INLINE void pair_loop(dem_system *s, const enum normal_model norma
                 const double q = 1.0 / (r * radsum * (mi + mj));
                 const double rinv = q * radsum * (mi + mj);
                 const double r_eff = ri * rj * (mi + mj) * r * q, m_eff = mi * mj * radsum * r * q;
-                const double en[3] = {d[0] * rinv, d[1] * rinv, d[2] * rinv};
                 const double delta = radsum - r;
                 const double overlap = delta / (ri < rj ? ri : rj);
                 max_overlap = overlap > max_overlap ? overlap : max_overlap;
+                double *h = hist + (size_t)k * hs;
+
+                /* en: the geometric normal (j to i); en_f: the one the forces use (surface model) */
+                const double en[3] = {d[0] * rinv, d[1] * rinv, d[2] * rinv};
+                double en_f[3] = {en[0], en[1], en[2]};
+                if (surface == SURFACE_ROUGHNESS) {
+                    const double sign = id[i] < id[j] ? 1.0 : -1.0;
+                    if (h[h_surf] == 0.0) {   /* a new contact: draw its scatter */
+                        const double n_ref[3] = {sign * en[0], sign * en[1], sign * en[2]};
+                        roughness_start(&rough, (uint64_t)(id[i] < id[j] ? id[i] : id[j]),
+                                        (uint64_t)(id[i] < id[j] ? id[j] : id[i]), step, n_ref, h + h_surf);
+                    }
+                    roughness_normal(h + h_surf, en, sign, en_f);
+                }
+                double contact_radius_sq = 0.0;
+                if (normal == NORMAL_EDINBURGH || cohesion == COHESION_SJKR)
+                    contact_radius_sq = contact_radius_sq_pair(ri, rj, r);
 
                 const double vr[3] = {v[i][0] - v[j][0], v[i][1] - v[j][1], v[i][2] - v[j][2]};
-                const double vn = vr[0] * en[0] + vr[1] * en[1] + vr[2] * en[2];
+                const double vn = vr[0] * en_f[0] + vr[1] * en_f[1] + vr[2] * en_f[2];
 
                 normal_result n;
                 if (normal == NORMAL_HERTZ) n = normal_hertz(c, delta, r_eff, m_eff, vn, fn_floor);
-                else n = normal_hooke(c, delta, r_eff, m_eff, vn, v_char, fn_floor);
+                else if (normal == NORMAL_HOOKE) n = normal_hooke(c, delta, r_eff, m_eff, vn, v_char, fn_floor);
+                else n = normal_edinburgh(c, delta, r_eff, m_eff, vn, sqrt(contact_radius_sq), fn_floor, h + h_norm);
 
-                double fc[3] = {n.fn * en[0], n.fn * en[1], n.fn * en[2]};
+                double fn = n.fn;
+                if (cohesion == COHESION_SJKR) fn += cohesion_sjkr(c, contact_radius_sq);
+                double fc[3] = {fn * en_f[0], fn * en_f[1], fn * en_f[2]};
                 if (tangential == TANGENTIAL_HISTORY) {
                     /* contact-point velocity: lever arms to the centre of the overlap */
                     const double cri = ri - 0.5 * delta, crj = rj - 0.5 * delta;
                     const double wr[3] = {cri * w[i][0] + crj * w[j][0], cri * w[i][1] + crj * w[j][1],
                                           cri * w[i][2] + crj * w[j][2]};
-                    const double vt[3] = {vr[0] - vn * en[0] - (wr[1] * en[2] - wr[2] * en[1]),
-                                          vr[1] - vn * en[1] - (wr[2] * en[0] - wr[0] * en[2]),
-                                          vr[2] - vn * en[2] - (wr[0] * en[1] - wr[1] * en[0])};
+                    const double vt[3] = {vr[0] - vn * en_f[0] - (wr[1] * en[2] - wr[2] * en[1]),
+                                          vr[1] - vn * en_f[1] - (wr[2] * en[0] - wr[0] * en[2]),
+                                          vr[2] - vn * en_f[2] - (wr[0] * en[1] - wr[1] * en[0])};
                     double ft[3];
-                    tangential_history(hist + (size_t)k * hs, en, vt, n, c->friction, dt, ft);
+                    tangential_history(h, en_f, vt, n, c->friction, dt, ft);
                     fc[0] += ft[0]; fc[1] += ft[1]; fc[2] += ft[2];
                     /* torque = lever x force, lever -cr en for i and +cr en for j (force -ft) */
                     const double ent[3] = {en[1] * ft[2] - en[2] * ft[1], en[2] * ft[0] - en[0] * ft[2],
@@ -107,6 +140,22 @@ static ALWAYS_INLINE void pair_loop(dem_system *s, const enum normal_model norma
                     for (int q = 0; q < 3; q++) {
                         ti[q] -= cri * ent[q];
                         t[j][q] -= crj * ent[q];
+                    }
+                }
+                if (rolling != ROLLING_NONE) {
+                    const double wij[3] = {w[i][0] - w[j][0], w[i][1] - w[j][1], w[i][2] - w[j][2]};
+                    double mr[3];
+                    if (rolling == ROLLING_CDT) rolling_cdt(c, en, wij, n, r_eff, mr);
+                    else if (rolling == ROLLING_CDT_JKR)
+                        rolling_cdt_jkr(c, en, wij, n, r_eff, dt, torsion_torque, h + h_roll, mr);
+                    else {
+                        const double ii = 1.0 / inv_inertia[i], ij = 1.0 / inv_inertia[j];
+                        /* 1.4 m r^2 = 3.5 I of a sphere; reduced for the pair */
+                        rolling_epsd(c, en, wij, n, r_eff, 3.5 * ii * ij / (ii + ij), dt, h + h_roll, mr);
+                    }
+                    for (int q = 0; q < 3; q++) {
+                        ti[q] += mr[q];
+                        t[j][q] -= mr[q];
                     }
                 }
                 for (int q = 0; q < 3; q++) {
@@ -123,25 +172,29 @@ static ALWAYS_INLINE void pair_loop(dem_system *s, const enum normal_model norma
     if (max_overlap > s->max_overlap_seen) s->max_overlap_seen = max_overlap;
 }
 
-#define KERNEL(NAME, NORMAL, TANGENTIAL, PERIODIC) \
-    static void NAME(dem_system *s) { pair_loop(s, NORMAL, TANGENTIAL, PERIODIC); }
-KERNEL(hooke_none, NORMAL_HOOKE, TANGENTIAL_NONE, 0)
-KERNEL(hooke_history, NORMAL_HOOKE, TANGENTIAL_HISTORY, 0)
-KERNEL(hertz_none, NORMAL_HERTZ, TANGENTIAL_NONE, 0)
-KERNEL(hertz_history, NORMAL_HERTZ, TANGENTIAL_HISTORY, 0)
-KERNEL(hooke_none_periodic, NORMAL_HOOKE, TANGENTIAL_NONE, 1)
-KERNEL(hooke_history_periodic, NORMAL_HOOKE, TANGENTIAL_HISTORY, 1)
-KERNEL(hertz_none_periodic, NORMAL_HERTZ, TANGENTIAL_NONE, 1)
-KERNEL(hertz_history_periodic, NORMAL_HERTZ, TANGENTIAL_HISTORY, 1)
+/* One kernel per combination of models (and periodic or not), listed by the X-macros below;
+ * the table is indexed by the case's model ids. */
+#define PAIR_KERNEL(N, T, R, C, S, P) \
+    static void pair_##N##_##T##_##R##_##C##_##S##_##P(dem_system *s) { pair_loop(s, N, T, R, C, S, P); }
+#define PAIR_ENTRY(N, T, R, C, S, P) [N][T][R][C][S][P] = pair_##N##_##T##_##R##_##C##_##S##_##P,
+#define FOR_PERIODIC(X, N, T, R, C, S) X(N, T, R, C, S, 0) X(N, T, R, C, S, 1)
+#define FOR_SURFACE(X, N, T, R, C) FOR_PERIODIC(X, N, T, R, C, SURFACE_DEFAULT) FOR_PERIODIC(X, N, T, R, C, SURFACE_ROUGHNESS)
+#define FOR_COHESION(X, N, T, R) FOR_SURFACE(X, N, T, R, COHESION_NONE) FOR_SURFACE(X, N, T, R, COHESION_SJKR)
+#define FOR_ROLLING(X, N, T) FOR_COHESION(X, N, T, ROLLING_NONE) FOR_COHESION(X, N, T, ROLLING_CDT) \
+    FOR_COHESION(X, N, T, ROLLING_CDT_JKR) FOR_COHESION(X, N, T, ROLLING_EPSD)
+#define FOR_TANGENTIAL(X, N) FOR_ROLLING(X, N, TANGENTIAL_NONE) FOR_ROLLING(X, N, TANGENTIAL_HISTORY)
+#define FOR_ALL(X) FOR_TANGENTIAL(X, NORMAL_HOOKE) FOR_TANGENTIAL(X, NORMAL_HERTZ) FOR_TANGENTIAL(X, NORMAL_EDINBURGH)
+
+FOR_ALL(PAIR_KERNEL)
 
 typedef void (*pair_kernel)(dem_system *);
-static const pair_kernel kernels[2][NORMAL_COUNT][TANGENTIAL_COUNT] = {
-    {{hooke_none, hooke_history}, {hertz_none, hertz_history}},
-    {{hooke_none_periodic, hooke_history_periodic}, {hertz_none_periodic, hertz_history_periodic}},
+static const pair_kernel kernels[NORMAL_COUNT][TANGENTIAL_COUNT][ROLLING_COUNT][COHESION_COUNT][SURFACE_COUNT][2] = {
+    FOR_ALL(PAIR_ENTRY)
 };
 
 void pair_forces_add(dem_system *s)
 {
+    const contact_models *m = &s->models;
     const int periodic = s->periodic[0] || s->periodic[1] || s->periodic[2];
-    kernels[periodic][s->models.normal][s->models.tangential](s);
+    kernels[m->normal][m->tangential][m->rolling][m->cohesion][m->surface][periodic](s);
 }

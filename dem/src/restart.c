@@ -74,10 +74,12 @@ void restart_setup(dem_system *s, const contact_state *cs)
     for (long c = 0; c < cs->npairs; c++) {
         int a = index_of(map, n, cs->pair_ids[2 * c]), b = index_of(map, n, cs->pair_ids[2 * c + 1]);
         if (a < 0 || b < 0) continue;
-        if (a > b) { const int t = a; a = b; b = t; }
+        const int flipped = a > b;   /* saved as (i, j), stored now as (j, i) */
+        if (flipped) { const int t = a; a = b; b = t; }
         for (int k = nl->start[a]; k < nl->start[a + 1]; k++)
             if (nl->partner[k] == b) {
-                memcpy(nl->history + (size_t)k * hs, cs->pair_history + c * hs, (size_t)hs * sizeof(double));
+                contact_history_copy(nl->history + (size_t)k * hs, cs->pair_history + c * hs, hs,
+                                     nl->history_antisymmetric, flipped);
                 nl->touching[k] = 1;
                 restored++;
                 break;

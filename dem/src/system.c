@@ -52,6 +52,7 @@ void system_setup_begin(dem_system *s)
 {
     s->history_size = contact_history_size(&s->models);
     s->nlist.history_size = s->history_size;
+    s->nlist.history_antisymmetric = contact_history_antisymmetric(&s->models);
     for (int d = 0; d < 3; d++) {
         s->period[d] = s->periodic[d] ? s->domain_max[d] - s->domain_min[d] : 0.0;
         s->inv_period[d] = s->periodic[d] ? 1.0 / s->period[d] : 0.0;

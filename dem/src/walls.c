@@ -4,8 +4,14 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "contact/cohesion_sjkr.h"
+#include "contact/normal_edinburgh.h"
 #include "contact/normal_hertz.h"
 #include "contact/normal_hooke.h"
+#include "contact/rolling_cdt.h"
+#include "contact/rolling_cdt_jkr.h"
+#include "contact/rolling_epsd.h"
+#include "contact/surface_roughness.h"
 #include "contact/tangential_history.h"
 #include "error.h"
 #include "system.h"
@@ -77,12 +83,19 @@ void walls_build_candidates(dem_system *s)
     }
 }
 
+/* Wall contacts see the wall as a sphere of infinite radius and mass: R* = R_i, m* = m_i,
+ * omega_j = 0. The models are those of pair_forces.c, with the same history layout. */
 static ALWAYS_INLINE void wall_loop(dem_system *s, const enum normal_model normal,
-                                    const enum tangential_model tangential)
+                                    const enum tangential_model tangential,
+                                    const enum rolling_model rolling, const enum cohesion_model cohesion,
+                                    const enum surface_model surface)
 {
     particles *p = &s->p;
     const int hs = s->history_size;
+    const int h_roll = tangential_history_size(tangential), h_norm = h_roll + rolling_history_size(rolling);
+    const int h_surf = h_norm + normal_history_size(normal);
     const double dt = s->dt, v_char = s->models.characteristic_velocity, fn_floor = s->models.fn_floor;
+    const int torsion_torque = s->models.torsion_torque;
     double max_overlap = 0.0;
     for (int k = 0; k < s->nwalls; k++) {
         const wall *wl = &s->walls[k];
@@ -92,30 +105,54 @@ static ALWAYS_INLINE void wall_loop(dem_system *s, const enum normal_model norma
             double *h = s->wall_history + ((size_t)i * s->nwalls + k) * hs;
             double gap, en[3];
             if (!wall_gap(wl, p->x[i], p->radius[i], &gap, en) || gap >= 0.0) {
-                if (tangential == TANGENTIAL_HISTORY) h[0] = h[1] = h[2] = 0.0;
+                for (int q = 0; q < hs; q++) h[q] = 0.0;
                 continue;
             }
             const double delta = -gap, ri = p->radius[i], mi = p->mass[i];
             const pair_coeffs *c = materials_pair(&s->materials, p->type[i], wl->material);
             max_overlap = fmax(max_overlap, delta / ri);
-            const double *vi = p->v[i];
-            const double vn = vi[0] * en[0] + vi[1] * en[1] + vi[2] * en[2];
+            double *vi = p->v[i];
+            double en_f[3] = {en[0], en[1], en[2]};
+            if (surface == SURFACE_ROUGHNESS) {
+                if (h[h_surf] == 0.0)   /* a new contact: key on (wall, particle id) */
+                    roughness_start(&s->models.roughness, ~(uint64_t)k, (uint64_t)p->id[i], s->step, en, h + h_surf);
+                roughness_normal(h + h_surf, en, 1.0, en_f);
+                const double v_plane = vi[0] * en[0] + vi[1] * en[1] + vi[2] * en[2];
+                const double v_rough = vi[0] * en_f[0] + vi[1] * en_f[1] + vi[2] * en_f[2];
+                if (v_plane < 0.0 && v_rough >= 0.0)                      /* eq. 17 */
+                    for (int q = 0; q < 3; q++) vi[q] -= 2.0 * v_plane * en[q];
+            }
+            double contact_radius_sq = 0.0;
+            if (normal == NORMAL_EDINBURGH || cohesion == COHESION_SJKR)
+                contact_radius_sq = contact_radius_sq_wall(ri, delta);
+            const double vn = vi[0] * en_f[0] + vi[1] * en_f[1] + vi[2] * en_f[2];
             normal_result n;
             if (normal == NORMAL_HERTZ) n = normal_hertz(c, delta, ri, mi, vn, fn_floor);
-            else n = normal_hooke(c, delta, ri, mi, vn, v_char, fn_floor);
-            double fc[3] = {n.fn * en[0], n.fn * en[1], n.fn * en[2]};
+            else if (normal == NORMAL_HOOKE) n = normal_hooke(c, delta, ri, mi, vn, v_char, fn_floor);
+            else n = normal_edinburgh(c, delta, ri, mi, vn, sqrt(contact_radius_sq), fn_floor, h + h_norm);
+            double fn = n.fn;
+            if (cohesion == COHESION_SJKR) fn += cohesion_sjkr(c, contact_radius_sq);
+            double fc[3] = {fn * en_f[0], fn * en_f[1], fn * en_f[2]};
+            const double *wi = p->omega[i];
+            const double cr = ri - 0.5 * delta;
             if (tangential == TANGENTIAL_HISTORY) {
-                const double cr = ri - 0.5 * delta;
-                const double *wi = p->omega[i];
-                const double vt[3] = {vi[0] - vn * en[0] - cr * (wi[1] * en[2] - wi[2] * en[1]),
-                                      vi[1] - vn * en[1] - cr * (wi[2] * en[0] - wi[0] * en[2]),
-                                      vi[2] - vn * en[2] - cr * (wi[0] * en[1] - wi[1] * en[0])};
+                const double vt[3] = {vi[0] - vn * en_f[0] - cr * (wi[1] * en[2] - wi[2] * en[1]),
+                                      vi[1] - vn * en_f[1] - cr * (wi[2] * en[0] - wi[0] * en[2]),
+                                      vi[2] - vn * en_f[2] - cr * (wi[0] * en[1] - wi[1] * en[0])};
                 double ft[3];
-                tangential_history(h, en, vt, n, c->friction, dt, ft);
+                tangential_history(h, en_f, vt, n, c->friction, dt, ft);
                 fc[0] += ft[0]; fc[1] += ft[1]; fc[2] += ft[2];
                 p->torque[i][0] -= cr * (en[1] * ft[2] - en[2] * ft[1]);
                 p->torque[i][1] -= cr * (en[2] * ft[0] - en[0] * ft[2]);
                 p->torque[i][2] -= cr * (en[0] * ft[1] - en[1] * ft[0]);
+            }
+            if (rolling != ROLLING_NONE) {
+                double mr[3];
+                if (rolling == ROLLING_CDT) rolling_cdt(c, en, wi, n, cr, mr);   /* lever R_i - delta/2, as LIGGGHTS */
+                else if (rolling == ROLLING_CDT_JKR)
+                    rolling_cdt_jkr(c, en, wi, n, ri, dt, torsion_torque, h + h_roll, mr);
+                else rolling_epsd(c, en, wi, n, ri, 3.5 / p->inv_inertia[i], dt, h + h_roll, mr);
+                for (int q = 0; q < 3; q++) p->torque[i][q] += mr[q];
             }
             p->f[i][0] += fc[0]; p->f[i][1] += fc[1]; p->f[i][2] += fc[2];
         }
@@ -123,18 +160,25 @@ static ALWAYS_INLINE void wall_loop(dem_system *s, const enum normal_model norma
     s->max_overlap_seen = fmax(s->max_overlap_seen, max_overlap);
 }
 
-#define KERNEL(NAME, NORMAL, TANGENTIAL) \
-    static void NAME(dem_system *s) { wall_loop(s, NORMAL, TANGENTIAL); }
-KERNEL(wall_hooke_none, NORMAL_HOOKE, TANGENTIAL_NONE)
-KERNEL(wall_hooke_history, NORMAL_HOOKE, TANGENTIAL_HISTORY)
-KERNEL(wall_hertz_none, NORMAL_HERTZ, TANGENTIAL_NONE)
-KERNEL(wall_hertz_history, NORMAL_HERTZ, TANGENTIAL_HISTORY)
+#define WALL_KERNEL(N, T, R, C, S) \
+    static void wall_##N##_##T##_##R##_##C##_##S(dem_system *s) { wall_loop(s, N, T, R, C, S); }
+#define WALL_ENTRY(N, T, R, C, S) [N][T][R][C][S] = wall_##N##_##T##_##R##_##C##_##S,
+#define FOR_SURFACE(X, N, T, R, C) X(N, T, R, C, SURFACE_DEFAULT) X(N, T, R, C, SURFACE_ROUGHNESS)
+#define FOR_COHESION(X, N, T, R) FOR_SURFACE(X, N, T, R, COHESION_NONE) FOR_SURFACE(X, N, T, R, COHESION_SJKR)
+#define FOR_ROLLING(X, N, T) FOR_COHESION(X, N, T, ROLLING_NONE) FOR_COHESION(X, N, T, ROLLING_CDT) \
+    FOR_COHESION(X, N, T, ROLLING_CDT_JKR) FOR_COHESION(X, N, T, ROLLING_EPSD)
+#define FOR_TANGENTIAL(X, N) FOR_ROLLING(X, N, TANGENTIAL_NONE) FOR_ROLLING(X, N, TANGENTIAL_HISTORY)
+#define FOR_ALL(X) FOR_TANGENTIAL(X, NORMAL_HOOKE) FOR_TANGENTIAL(X, NORMAL_HERTZ) FOR_TANGENTIAL(X, NORMAL_EDINBURGH)
+
+FOR_ALL(WALL_KERNEL)
 
 typedef void (*wall_kernel)(dem_system *);
-static const wall_kernel kernels[NORMAL_COUNT][TANGENTIAL_COUNT] = {
-    {wall_hooke_none, wall_hooke_history}, {wall_hertz_none, wall_hertz_history}};
+static const wall_kernel kernels[NORMAL_COUNT][TANGENTIAL_COUNT][ROLLING_COUNT][COHESION_COUNT][SURFACE_COUNT] = {
+    FOR_ALL(WALL_ENTRY)
+};
 
 void walls_add_forces(dem_system *s)
 {
-    kernels[s->models.normal][s->models.tangential](s);
+    const contact_models *m = &s->models;
+    kernels[m->normal][m->tangential][m->rolling][m->cohesion][m->surface](s);
 }

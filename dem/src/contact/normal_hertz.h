@@ -23,6 +23,8 @@ static inline normal_result normal_hertz(const pair_coeffs *c, double delta, dou
     const double fn = kn * delta - gamma_n * vn;
     normal_result r;
     r.fn = fn > fn_floor ? fn : fn_floor;
+    r.kn = kn;
+    r.fn_spring = kn * delta;
     r.kt = st;
     r.gammat = gamma_n * c->sqrt_st_over_sn;    /* sqrt(st m*) = sqrt(sn m*) sqrt(st/sn) */
     return r;

@@ -28,6 +28,8 @@ static inline normal_result normal_hooke(const pair_coeffs *c, double delta, dou
     normal_result r;
     const double fn = kn * delta - gamma_n * vn;
     r.fn = fn > fn_floor ? fn : fn_floor;
+    r.kn = kn;
+    r.fn_spring = kn * delta;
     r.kt = kn;
     r.gammat = gamma_n;
     return r;

@@ -1,0 +1,79 @@
+/* Surface model `roughness` (seed note 001, eq. 1-17): the contact normal is rotated by a random
+ * scatter angle Delta Gamma about a random azimuth psi (eq. 11-12), and the normal and
+ * tangential models work with the rotated normal n'. The angles are drawn once, when the
+ * contact starts, from a counter-based generator keyed on the seed, the two particle ids (or
+ * particle id and wall index) and the start step, so a run is reproducible and independent of
+ * particle order. History (4 doubles): cos Delta Gamma and the offset dR of eq. 11 in space.
+ *
+ * Choices where the note is open:
+ *  - dR is drawn in the frame of the normal oriented from the lower to the higher particle id,
+ *    and n' = cos(dG) n + s dR with s = +1 or -1 for the particle seen (eq. 12; "the sign
+ *    reverses for a particle pair"), so i and j feel equal and opposite forces. While the
+ *    contact lasts dR is projected on the current tangent plane (n turns a little).
+ *  - Delta Gamma: `normal` N(0, stdDev) truncated to |dG| <= max, or `uniform` on [0, max];
+ *    psi uniform on [0, 2 pi). max < pi/2 so that n' keeps pointing out of the contact.
+ *  - v_n and v_t (eq. 6-8) are taken along n'; the rotational part v_omega (eq. 14-15) uses
+ *    the true separation, written (c_i w_i + c_j w_j) x n as the default surface computes it,
+ *    so that zero scatter reproduces the default surface bit for bit. The normal force acts
+ *    along n' through the centres; torques come from the tangential force, lever -c_i n.
+ *  - eq. 17 (wall penetration guard) is read as: a particle that moves into the wall plane
+ *    (v . n_plane < 0) while it separates along the rotated normal (v . n' >= 0, so the rough
+ *    contact cannot push it back) has its normal velocity reflected, v -= 2 (v . n_plane) n_plane. */
+#ifndef DEM_SURFACE_ROUGHNESS_H
+#define DEM_SURFACE_ROUGHNESS_H
+
+#include <math.h>
+#include <stdint.h>
+#include "contact.h"
+
+static inline uint64_t roughness_mix(uint64_t z)
+{
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    return z ^ (z >> 31);
+}
+
+/* The k-th uniform number in [0, 1) of the stream keyed on (seed, a, b, step). */
+static inline double roughness_uniform(uint64_t key, uint64_t k)
+{
+    return (double)(roughness_mix(key + (k + 1) * 0x9e3779b97f4a7c15ULL) >> 11) * 0x1.0p-53;
+}
+
+/* Draw the angles of a new contact. a < b: the ids (a wall is id ~k); n_ref: the normal
+ * oriented from b to a. Fills h = {cos dG, dR}. */
+static inline void roughness_start(const roughness_params *rp, uint64_t a, uint64_t b, long step,
+                                   const double n_ref[3], double *restrict h)
+{
+    uint64_t key = roughness_mix(rp->seed + 0x9e3779b97f4a7c15ULL);
+    key = roughness_mix(key ^ a);
+    key = roughness_mix(key ^ b);
+    key = roughness_mix(key ^ (uint64_t)step);
+    double dg;
+    uint64_t k = 0;
+    if (rp->distribution == SCATTER_UNIFORM) {
+        dg = rp->max * roughness_uniform(key, k++);
+    } else {
+        do {   /* Box-Muller; rejection keeps |dG| <= max */
+            const double u1 = 1.0 - roughness_uniform(key, k++), u2 = roughness_uniform(key, k++);
+            dg = rp->std_dev * sqrt(-2.0 * log(u1)) * cos(2.0 * M_PI * u2);
+        } while (fabs(dg) > rp->max);
+    }
+    const double psi = 2.0 * M_PI * roughness_uniform(key, k++);
+    /* an orthonormal pair {n1, n2} across n_ref (Duff et al. 2017) */
+    const double sgn = n_ref[2] >= 0.0 ? 1.0 : -1.0;
+    const double p = -1.0 / (sgn + n_ref[2]), q = n_ref[0] * n_ref[1] * p;
+    const double n1[3] = {1.0 + sgn * n_ref[0] * n_ref[0] * p, sgn * q, -sgn * n_ref[0]};
+    const double n2[3] = {q, sgn + n_ref[1] * n_ref[1] * p, -n_ref[1]};
+    const double sin_dg = sin(dg), s1 = sin_dg * sin(psi), s2 = sin_dg * cos(psi);
+    h[0] = cos(dg);
+    for (int d = 0; d < 3; d++) h[1 + d] = s1 * n1[d] + s2 * n2[d];            /* eq. 11 */
+}
+
+/* n' for the particle whose normal is n (from its partner to it); s: +1 if n is n_ref. */
+static inline void roughness_normal(const double *restrict h, const double n[3], double s, double n_rot[3])
+{
+    const double dr_n = h[1] * n[0] + h[2] * n[1] + h[3] * n[2];
+    for (int d = 0; d < 3; d++) n_rot[d] = h[0] * n[d] + s * (h[1 + d] - dr_n * n[d]);   /* eq. 12 */
+}
+
+#endif
