@@ -55,6 +55,58 @@ static int split_pair(const material_table *t, const char *key, int *a, int *b)
     return 0;
 }
 
+/* A model parameter of an interaction: from the entry, else from the 'default' entry, else
+ * the fallback (NAN: required). */
+static double model_param(const dict *e, const dict *def, const char *key, double fallback,
+                          double lo, double hi, const char *model)
+{
+    if (dict_has(e, key)) return dict_scalar(e, key, lo, hi);
+    if (def && dict_has(def, key)) return dict_scalar(def, key, lo, hi);
+    if (isnan(fallback))
+        dict_fatal_here(e, "the %s model needs '%s' in this interaction (or in 'default')", model, key);
+    return fallback;
+}
+
+/* The optional models' parameters of one interaction (units in dem/README.md). */
+static pair_model_params read_model_params(const dict *e, const dict *def, const contact_models *m)
+{
+    pair_model_params p;
+    memset(&p, 0, sizeof p);
+    switch (m->rolling) {
+    case ROLLING_NONE: break;
+    case ROLLING_CDT:
+        p.rolling_friction = model_param(e, def, "rollingFriction", NAN, 0.0, 10.0, "cdt rolling");
+        break;
+    case ROLLING_EPSD:
+        p.rolling_friction = model_param(e, def, "rollingFriction", NAN, 0.0, 10.0, "epsd rolling");
+        p.rolling_damping = model_param(e, def, "rollingViscousDamping", 0.0, 0.0, 10.0, "epsd rolling");
+        break;
+    case ROLLING_CDT_JKR:
+        p.work_of_adhesion = model_param(e, def, "workOfAdhesion", NAN, 0.0, 1e3, "cdtJkr rolling");
+        p.adhesion_hysteresis = model_param(e, def, "adhesionHysteresis", NAN, 0.0, 1e3, "cdtJkr rolling");
+        if (!(p.work_of_adhesion > 0.0))
+            dict_fatal(dict_has(e, "workOfAdhesion") || !def ? e : def, "workOfAdhesion",
+                       "cdtJkr takes mu_r from the JKR contact radius (seed 000 eq. 2-3): the work of "
+                       "adhesion must be positive [J/m^2] (use rolling cdt for a given mu_r)");
+        break;
+    default: break;
+    }
+    if (m->cohesion == COHESION_SJKR)
+        p.cohesion_energy_density = model_param(e, def, "cohesionEnergyDensity", NAN, 0.0, 1e12, "sjkr cohesion");
+    if (m->normal == NORMAL_EDINBURGH) {
+        p.unloading_ratio = model_param(e, def, "unloadingRatio", NAN, -1e300, 1e6, "edinburgh normal");
+        if (!(p.unloading_ratio > 1.0))
+            dict_fatal(dict_has(e, "unloadingRatio") || !def ? e : def, "unloadingRatio",
+                       "kappa21 = k2/k1 must exceed 1 (got %g): with k2 <= k1 the plastic overlap of "
+                       "seed 002 eq. 3 is undefined", p.unloading_ratio);
+        p.surface_energy = model_param(e, def, "surfaceEnergy", 0.0, 0.0, 1e3, "edinburgh normal");
+        p.loading_exponent = model_param(e, def, "loadingExponent", 1.5, 1.0, 3.0, "edinburgh normal");
+        p.adhesion_exponent = model_param(e, def, "adhesionExponent", 1.5, 1e-3, 3.0, "edinburgh normal");
+        p.tension_threshold = model_param(e, def, "tensionThreshold", 0.0, -1e6, 1e6, "edinburgh normal");
+    }
+    return p;
+}
+
 static void read_interactions(const dict *root, dem_system *s)
 {
     const dict *d = dict_sub(root, "interactions");
@@ -70,14 +122,20 @@ static void read_interactions(const dict *root, dem_system *s)
             if (!e) dict_fatal(d, key, "an interaction is a sub-dictionary { restitution; friction; }");
             const double rest = dict_scalar(e, "restitution", 1e-6, 1.0);
             const double mu = dict_scalar(e, "friction", 0.0, 10.0);
+            const pair_model_params mp = read_model_params(e, is_default ? NULL : def, &s->models);
             if (is_default) {
                 for (int a = 0; a < t->ntypes; a++)
-                    for (int b = 0; b < t->ntypes; b++) { materials_set_pair(t, a, b, rest, mu); set[a][b] = 1; }
+                    for (int b = 0; b < t->ntypes; b++) {
+                        materials_set_pair(t, a, b, rest, mu);
+                        materials_set_models(t, a, b, &mp);
+                        set[a][b] = 1;
+                    }
             } else {
                 int a, b;
                 if (!split_pair(t, key, &a, &b))
                     dict_fatal(d, key, "expected '<material>-<material>' with two defined materials, or 'default'");
                 materials_set_pair(t, a, b, rest, mu);
+                materials_set_models(t, a, b, &mp);
                 set[a][b] = set[b][a] = 1;
             }
         }
@@ -101,6 +159,21 @@ static void read_models(const dict *root, dem_system *s)
     m->fn_floor = dict_bool_opt(d, "limitForce", 0) ? 0.0 : -INFINITY;
     if (m->normal == NORMAL_HOOKE)
         m->characteristic_velocity = dict_scalar(d, "characteristicVelocity", 1e-6, 1e4);
+    if (m->rolling == ROLLING_CDT_JKR) m->torsion_torque = dict_bool_opt(d, "torsionTorque", 1);
+    if (m->surface == SURFACE_ROUGHNESS) {
+        const dict *r = dict_sub(d, "roughness");
+        static const char *const dists[] = {"normal", "uniform", 0};
+        roughness_params *rp = &m->roughness;
+        rp->distribution = dict_choice(r, "distribution", dists);
+        /* angles in radians; |Delta Gamma| < pi/2 keeps the rotated normal out of the contact */
+        if (rp->distribution == SCATTER_NORMAL) {
+            rp->std_dev = dict_scalar(r, "stdDev", 0.0, 1.0);
+            rp->max = dict_scalar_opt(r, "max", fmin(3.0 * rp->std_dev, 1.5), 0.0, 1.5);
+        } else {
+            rp->max = dict_scalar(r, "max", 0.0, 1.5);
+        }
+        rp->seed = (uint64_t)dict_label_opt(r, "seed", 1, 0, 2147483647L);
+    }
 }
 
 static int material_of(const dict *d, const material_table *t)
@@ -304,8 +377,8 @@ void case_read(const char *case_dir, dem_system *s, run_settings *rs, int skip_i
 
     read_domain(root, s);
     read_materials(root, s);
-    read_interactions(root, s);
     read_models(root, s);
+    read_interactions(root, s);
     read_walls(root, s);
     run_insertions(root, s, !skip_insertion);
     rs->max_expected_velocity = dict_has(root, "maxExpectedVelocity")

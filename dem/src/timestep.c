@@ -17,6 +17,15 @@ static double rayleigh_time(const material *m, double radius)
  * or pi sqrt(m* / kn) for the linear spring. */
 static double contact_time(const dem_system *s, const pair_coeffs *c, double r_eff, double m_eff, double v)
 {
+    if (s->models.normal == NORMAL_EDINBURGH) {
+        /* elastic impact on F = k1 delta^d (seed 002 eq. 1), 2 (delta_max / v) int_0^1 dx /
+         * sqrt(1 - x^(d+1)), shortened by sqrt(kappa21) for the stiffer unloading branch */
+        const double d = c->m.loading_exponent;
+        const double k1 = d == 1.0 ? 2.0 * c->Y_eff * r_eff : 4.0 / 3.0 * c->Y_eff * sqrt(r_eff);
+        const double delta_max = pow((d + 1.0) * m_eff * v * v / (2.0 * k1), 1.0 / (d + 1.0));
+        const double integral = sqrt(M_PI) * tgamma(1.0 + 1.0 / (d + 1.0)) / tgamma(0.5 + 1.0 / (d + 1.0));
+        return 2.0 * delta_max / v * integral / sqrt(c->m.unloading_ratio);
+    }
     if (s->models.normal == NORMAL_HOOKE)
         return M_PI * sqrt(m_eff / hooke_stiffness(c, r_eff, m_eff, s->models.characteristic_velocity));
     return 2.87 * pow(m_eff * m_eff / (r_eff * c->Y_eff * c->Y_eff * v), 0.2);
@@ -72,7 +81,7 @@ void timestep_check(const dem_system *s, double max_velocity, int override, cons
     printf("time step %g s: %.3f of the Rayleigh time %.3g s (%s; limit %.2f), "
            "%.3f of the %s contact time %.3g s at %g m/s (%s; limit %.2f)\n",
            s->dt, fr, lim.rayleigh_time, lim.rayleigh_material, RAYLEIGH_FRACTION, fc,
-           s->models.normal == NORMAL_HOOKE ? "linear-spring" : "Hertz", lim.contact_time,
+           s->models.normal == NORMAL_HOOKE ? "linear-spring" : s->models.normal == NORMAL_EDINBURGH ? "edinburgh unloading" : "Hertz", lim.contact_time,
            max_velocity, lim.contact_pair, CONTACT_FRACTION);
     if (s->dt <= lim.largest_safe_dt) return;
     if (override) {

@@ -117,10 +117,6 @@ static ALWAYS_INLINE void wall_loop(dem_system *s, const enum normal_model norma
                 if (h[h_surf] == 0.0)   /* a new contact: key on (wall, particle id) */
                     roughness_start(&s->models.roughness, ~(uint64_t)k, (uint64_t)p->id[i], s->step, en, h + h_surf);
                 roughness_normal(h + h_surf, en, 1.0, en_f);
-                const double v_plane = vi[0] * en[0] + vi[1] * en[1] + vi[2] * en[2];
-                const double v_rough = vi[0] * en_f[0] + vi[1] * en_f[1] + vi[2] * en_f[2];
-                if (v_plane < 0.0 && v_rough >= 0.0)                      /* eq. 17 */
-                    for (int q = 0; q < 3; q++) vi[q] -= 2.0 * v_plane * en[q];
             }
             double contact_radius_sq = 0.0;
             if (normal == NORMAL_EDINBURGH || cohesion == COHESION_SJKR)
@@ -153,6 +149,11 @@ static ALWAYS_INLINE void wall_loop(dem_system *s, const enum normal_model norma
                     rolling_cdt_jkr(c, en, wi, n, ri, dt, torsion_torque, h + h_roll, mr);
                 else rolling_epsd(c, en, wi, n, ri, 3.5 / p->inv_inertia[i], dt, h + h_roll, mr);
                 for (int q = 0; q < 3; q++) p->torque[i][q] += mr[q];
+            }
+            if (surface == SURFACE_ROUGHNESS) {   /* eq. 17: the rough contact fails to hold it */
+                const double v_plane = vi[0] * en[0] + vi[1] * en[1] + vi[2] * en[2];
+                if (v_plane < 0.0 && fc[0] * en[0] + fc[1] * en[1] + fc[2] * en[2] <= 0.0)
+                    for (int q = 0; q < 3; q++) vi[q] -= 2.0 * v_plane * en[q];
             }
             p->f[i][0] += fc[0]; p->f[i][1] += fc[1]; p->f[i][2] += fc[2];
         }

@@ -16,9 +16,12 @@
  *    the true separation, written (c_i w_i + c_j w_j) x n as the default surface computes it,
  *    so that zero scatter reproduces the default surface bit for bit. The normal force acts
  *    along n' through the centres; torques come from the tangential force, lever -c_i n.
- *  - eq. 17 (wall penetration guard) is read as: a particle that moves into the wall plane
- *    (v . n_plane < 0) while it separates along the rotated normal (v . n' >= 0, so the rough
- *    contact cannot push it back) has its normal velocity reflected, v -= 2 (v . n_plane) n_plane. */
+ *  - eq. 17 (wall penetration guard; its signs do not fit eq. 4-6) is read as: a particle that
+ *    moves into the wall plane (v . n_plane < 0) while the rough contact's total force does
+ *    not push it out (F . n_plane <= 0, possible at large Delta Gamma with friction or a pulling
+ *    dashpot) has its normal velocity reflected, v -= 2 (v . n_plane) n_plane. In an ordinary
+ *    impact the force pushes out and the guard never acts.
+ */
 #ifndef DEM_SURFACE_ROUGHNESS_H
 #define DEM_SURFACE_ROUGHNESS_H
 
