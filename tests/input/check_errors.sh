@@ -17,6 +17,11 @@ cases=(
   "missing_material|s/material glass;$/material steel;/|demProperties:19: error: key 'material'.*steel"
   "bad_vector|s/gravity        (0 0 -9.81);/gravity        (0 -9.81);/|demProperties:6: error: key 'gravity'"
   "unbalanced_brace|s/^domain { min/domain { { min/|demProperties:8: error"
+  "cdtJkr_without_adhesion|s/tangential history; }/tangential history; rolling cdtJkr; }/|demProperties:11: error: .*cdtJkr rolling model needs 'workOfAdhesion'"
+  "cdtJkr_zero_adhesion|s/tangential history; }/tangential history; rolling cdtJkr; }/;s/friction 0.5; }/friction 0.5; workOfAdhesion 0; adhesionHysteresis 1; }/|demProperties:11: error: key 'workOfAdhesion'.*positive"
+  "edinburgh_kappa21|s/normal hertz;/normal edinburgh;/;s/friction 0.5; }/friction 0.5; unloadingRatio 1; }/|demProperties:11: error: key 'unloadingRatio'.*exceed 1"
+  "sjkr_without_energy|s/tangential history; }/tangential history; cohesion sjkr; }/|demProperties:11: error: .*cohesionEnergyDensity"
+  "roughness_angle|s/tangential history; }/tangential history; surface roughness; roughness { distribution uniform; max 2; } }/|demProperties:10: error: key 'max'"
   "blow_up|s/^timeStep       1e-5;/timeStep       5e-4; timeStepOverride true; endTime 1;/;/^endTime /d|blew up|left the domain"
 )
 for c in "${cases[@]}"; do
