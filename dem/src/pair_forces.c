@@ -99,20 +99,27 @@ static ALWAYS_INLINE void pair_loop(dem_system *s, const enum normal_model norma
                 /* en: the geometric normal (j to i); en_f: the one the forces use (surface model) */
                 const double en[3] = {d[0] * rinv, d[1] * rinv, d[2] * rinv};
                 double en_f[3] = {en[0], en[1], en[2]};
+                double contact_radius_sq = 0.0;
+                if (normal == NORMAL_EDINBURGH || cohesion == COHESION_SJKR || surface == SURFACE_ROUGHNESS)
+                    contact_radius_sq = contact_radius_sq_pair(ri, rj, r);
+                const double vr[3] = {v[i][0] - v[j][0], v[i][1] - v[j][1], v[i][2] - v[j][2]};
                 if (surface == SURFACE_ROUGHNESS) {
                     const double sign = id[i] < id[j] ? 1.0 : -1.0;
-                    if (h[h_surf] == 0.0) {   /* a new contact: draw its scatter */
-                        const double n_ref[3] = {sign * en[0], sign * en[1], sign * en[2]};
-                        roughness_start(&rough, (uint64_t)(id[i] < id[j] ? id[i] : id[j]),
-                                        (uint64_t)(id[i] < id[j] ? id[j] : id[i]), step, n_ref, h + h_surf);
-                    }
+                    const double n_ref[3] = {sign * en[0], sign * en[1], sign * en[2]};
+                    const double cri = ri - 0.5 * delta, crj = rj - 0.5 * delta;
+                    const double wr[3] = {cri * w[i][0] + crj * w[j][0], cri * w[i][1] + crj * w[j][1],
+                                          cri * w[i][2] + crj * w[j][2]};
+                    const double vrn = vr[0] * en[0] + vr[1] * en[1] + vr[2] * en[2];
+                    const double vs[3] = {vr[0] - vrn * en[0] - (wr[1] * en[2] - wr[2] * en[1]),
+                                          vr[1] - vrn * en[1] - (wr[2] * en[0] - wr[0] * en[2]),
+                                          vr[2] - vrn * en[2] - (wr[0] * en[1] - wr[1] * en[0])};
+                    roughness_update(&rough, (uint64_t)(id[i] < id[j] ? id[i] : id[j]),
+                                     (uint64_t)(id[i] < id[j] ? id[j] : id[i]), step, n_ref,
+                                     sqrt(contact_radius_sq), sqrt(vs[0] * vs[0] + vs[1] * vs[1] + vs[2] * vs[2]),
+                                     dt, h + h_surf);
                     roughness_normal(h + h_surf, en, sign, en_f);
                 }
-                double contact_radius_sq = 0.0;
-                if (normal == NORMAL_EDINBURGH || cohesion == COHESION_SJKR)
-                    contact_radius_sq = contact_radius_sq_pair(ri, rj, r);
 
-                const double vr[3] = {v[i][0] - v[j][0], v[i][1] - v[j][1], v[i][2] - v[j][2]};
                 const double vn = vr[0] * en_f[0] + vr[1] * en_f[1] + vr[2] * en_f[2];
 
                 normal_result n;

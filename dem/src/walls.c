@@ -113,14 +113,20 @@ static ALWAYS_INLINE void wall_loop(dem_system *s, const enum normal_model norma
             max_overlap = fmax(max_overlap, delta / ri);
             double *vi = p->v[i];
             double en_f[3] = {en[0], en[1], en[2]};
-            if (surface == SURFACE_ROUGHNESS) {
-                if (h[h_surf] == 0.0)   /* a new contact: key on (wall, particle id) */
-                    roughness_start(&s->models.roughness, ~(uint64_t)k, (uint64_t)p->id[i], s->step, en, h + h_surf);
+            double contact_radius_sq = 0.0;
+            if (normal == NORMAL_EDINBURGH || cohesion == COHESION_SJKR || surface == SURFACE_ROUGHNESS)
+                contact_radius_sq = contact_radius_sq_wall(ri, delta);
+            if (surface == SURFACE_ROUGHNESS) {   /* keyed on (wall, particle id) */
+                const double *wi = p->omega[i], cr = ri - 0.5 * delta;
+                const double vin = vi[0] * en[0] + vi[1] * en[1] + vi[2] * en[2];
+                const double vs[3] = {vi[0] - vin * en[0] - cr * (wi[1] * en[2] - wi[2] * en[1]),
+                                      vi[1] - vin * en[1] - cr * (wi[2] * en[0] - wi[0] * en[2]),
+                                      vi[2] - vin * en[2] - cr * (wi[0] * en[1] - wi[1] * en[0])};
+                roughness_update(&s->models.roughness, ~(uint64_t)k, (uint64_t)p->id[i], s->step, en,
+                                 sqrt(contact_radius_sq), sqrt(vs[0] * vs[0] + vs[1] * vs[1] + vs[2] * vs[2]),
+                                 dt, h + h_surf);
                 roughness_normal(h + h_surf, en, 1.0, en_f);
             }
-            double contact_radius_sq = 0.0;
-            if (normal == NORMAL_EDINBURGH || cohesion == COHESION_SJKR)
-                contact_radius_sq = contact_radius_sq_wall(ri, delta);
             const double vn = vi[0] * en_f[0] + vi[1] * en_f[1] + vi[2] * en_f[2];
             normal_result n;
             if (normal == NORMAL_HERTZ) n = normal_hertz(c, delta, ri, mi, vn, fn_floor);

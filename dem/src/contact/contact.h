@@ -52,7 +52,7 @@ static inline int rolling_history_size(enum rolling_model r)
     return r == ROLLING_EPSD || r == ROLLING_CDT_JKR ? 3 : 0;
 }
 static inline int normal_history_size(enum normal_model n) { return n == NORMAL_EDINBURGH ? 1 : 0; }
-static inline int surface_history_size(enum surface_model s) { return s == SURFACE_ROUGHNESS ? 4 : 0; }
+static inline int surface_history_size(enum surface_model s) { return s == SURFACE_ROUGHNESS ? 6 : 0; }
 int contact_history_size(const contact_models *m);
 /* The leading part that is antisymmetric in (i, j). */
 int contact_history_antisymmetric(const contact_models *m);

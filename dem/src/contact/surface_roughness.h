@@ -3,13 +3,19 @@
  * tangential models work with the rotated normal n'. The angles are drawn once, when the
  * contact starts, from a counter-based generator keyed on the seed, the two particle ids (or
  * particle id and wall index) and the start step, so a run is reproducible and independent of
- * particle order. History (4 doubles): cos Delta Gamma and the offset dR of eq. 11 in space.
+ * particle order. History (6 doubles): cos Delta Gamma, the offset dR of eq. 11 in space, the
+ * distance the contact points have slid since the draw, and the largest contact radius since.
  *
  * Choices where the note is open:
  *  - dR is drawn in the frame of the normal oriented from the lower to the higher particle id,
  *    and n' = cos(dG) n + s dR with s = +1 or -1 for the particle seen (eq. 12; "the sign
  *    reverses for a particle pair"), so i and j feel equal and opposite forces. While the
  *    contact lasts dR is projected on the current tangent plane (n turns a little).
+ *  - An asperity is as wide as the contact: once the contact points have slid further than the
+ *    largest contact radius a since the draw, the angles are drawn anew (keyed on the step of
+ *    the redraw; the largest a, so that an impact is not redrawn as a shrinks to 0 at its end). Without this a
+ *    wall contact would keep one tilted normal for as long as it lasts, and its sideways part
+ *    Fn sin dG would push a sphere along the wall without end, feeding it energy.
  *  - Delta Gamma: `normal` N(0, stdDev) truncated to |dG| <= max, or `uniform` on [0, max];
  *    psi uniform on [0, 2 pi). max < pi/2 so that n' keeps pointing out of the contact.
  *  - v_n and v_t (eq. 6-8) are taken along n'; the rotational part v_omega (eq. 14-15) uses
@@ -70,6 +76,21 @@ static inline void roughness_start(const roughness_params *rp, uint64_t a, uint6
     const double sin_dg = sin(dg), s1 = sin_dg * sin(psi), s2 = sin_dg * cos(psi);
     h[0] = cos(dg);
     for (int d = 0; d < 3; d++) h[1 + d] = s1 * n1[d] + s2 * n2[d];            /* eq. 11 */
+}
+
+/* Draw at the start of a contact or when the contact has slid past its asperity (radius a);
+ * then add this step's sliding, |v_t| dt, v_t the contact points' relative tangential velocity. */
+static inline void roughness_update(const roughness_params *rp, uint64_t a, uint64_t b, long step,
+                                    const double n_ref[3], double contact_radius, double slide_speed,
+                                    double dt, double *restrict h)
+{
+    if (contact_radius > h[5]) h[5] = contact_radius;
+    if (h[0] == 0.0 || h[4] > h[5]) {
+        roughness_start(rp, a, b, step, n_ref, h);
+        h[4] = 0.0;
+        h[5] = contact_radius;
+    }
+    h[4] += slide_speed * dt;
 }
 
 /* n' for the particle whose normal is n (from its partner to it); s: +1 if n is n_ref. */
