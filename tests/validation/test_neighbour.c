@@ -76,37 +76,56 @@ static void gas(int periodic)
 }
 
 /* A sphere pressed onto another and sliding slowly sideways: the tangential spring
- * must carry over unchanged through a forced rebuild with sorting. */
-static void history_survives(void)
+ * must carry over unchanged through a forced rebuild with sorting. flip: the upper sphere is
+ * listed first and the sort (off until the forced rebuild) puts the lower one first, so the
+ * pair is stored as (j, i) afterwards and its history, built from v_i - v_j, must change sign. */
+static void history_survives(int flip)
 {
     dem_system s;
     make_system(&s, 5e6, 0.45, 2500, 0.5, 0.5, NORMAL_HERTZ, TANGENTIAL_HISTORY, 0.01);
     for (int k = 0; k < 10; k++)   /* bystanders so the sort really permutes */
         add_sphere(&s, 0.008 - 0.0016 * k, 0.008, 0.008, 0, 0, 0, 0.5e-3);
-    add_sphere(&s, 0, 0, 0, 0, 0, 0, 1e-3);
-    add_sphere(&s, 0, 0, 2e-3 - 1e-6, 0.01, 0, 0, 1e-3);
+    if (flip) {
+        add_sphere(&s, 0, 0, 2e-3 - 1e-6, 0.001, 0, 0, 1e-3);   /* id 10, upper */
+        add_sphere(&s, 0, 0, 0, 0, 0, 0, 1e-3);                /* id 11, lower */
+    } else {
+        add_sphere(&s, 0, 0, 0, 0, 0, 0, 1e-3);
+        add_sphere(&s, 0, 0, 2e-3 - 1e-6, 0.001, 0, 0, 1e-3);
+    }
     s.dt = 1e-6;
     s.nlist.skin = 0.2e-3;
-    s.nlist.sort_interval = 1;
+    s.nlist.sort_interval = flip ? 0 : 1;
     system_setup(&s);
-    for (int k = 0; k < 20; k++) system_step(&s);
-    /* find the pair and its history by ids 10 and 11 */
+    for (int k = 0; k < 40; k++) system_step(&s);
+    /* find the pair and its history by ids 10 and 11, as seen from 10; the contact sticks
+     * (kt |s| well below mu Fn), so its history is the spring's own and not reset by Coulomb */
     double before[3] = {0, 0, 0}, after[3] = {0, 0, 0};
+    int row_id[2] = {-1, -1};
     for (int pass = 0; pass < 2; pass++) {
-        if (pass == 1) { s.nlist.builds = 0; s.nlist.rows = -1; system_step(&s); }
+        if (pass == 1) {   /* force a rebuild with sorting: pretend everything moved since the build */
+            s.nlist.builds = 0;
+            s.nlist.sort_interval = 1;
+            for (int i = 0; i < s.p.n; i++) s.nlist.x_at_build[i][0] += 1.0;
+            system_step(&s);
+        }
         for (int i = 0; i < s.p.n; i++)
             for (int k = s.nlist.start[i]; k < s.nlist.start[i + 1]; k++) {
                 const int j = s.nlist.partner[k];
                 if ((s.p.id[i] == 10 && s.p.id[j] == 11) || (s.p.id[i] == 11 && s.p.id[j] == 10)) {
                     const double sign = s.p.id[i] == 10 ? 1.0 : -1.0;
+                    row_id[pass] = (int)s.p.id[i];
                     for (int d = 0; d < 3; d++) (pass ? after : before)[d] = sign * s.nlist.history[(size_t)k * 3 + d];
                 }
             }
     }
+    const char *tag = flip ? " (pair stored as (j, i) after the sort)" : "";
+    char what[120];
     check_true("contact has a tangential history before the rebuild", fabs(before[0]) > 0);
-    /* one more step adds vt dt (about 1e-8 m here): compare to that precision */
-    check_rel("tangential history after rebuild + sort", after[0], before[0], 0.05);
-    check_true("the forced rebuild sorted", s.nlist.sorts >= 2);
+    if (flip) check_true("the sort swapped the pair's order", row_id[0] == 10 && row_id[1] == 11);
+    /* one more step adds vt dt (1e-9 m here, 2.5 % of the history): compare to that precision */
+    snprintf(what, sizeof what, "tangential history after rebuild + sort%s", tag);
+    check_rel(what, after[0], before[0], 0.05);
+    check_true("the forced rebuild sorted", s.nlist.sorts >= 1);
     system_free(&s);
 }
 
@@ -114,6 +133,7 @@ int main(void)
 {
     gas(0);
     gas(1);
-    history_survives();
+    history_survives(0);
+    history_survives(1);
     return finish("test_neighbour");
 }
