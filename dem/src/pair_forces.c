@@ -110,9 +110,8 @@ static ALWAYS_INLINE void pair_loop(dem_system *s, const enum normal_model norma
                     const double wr[3] = {cri * w[i][0] + crj * w[j][0], cri * w[i][1] + crj * w[j][1],
                                           cri * w[i][2] + crj * w[j][2]};
                     const double vrn = vr[0] * en[0] + vr[1] * en[1] + vr[2] * en[2];
-                    const double vs[3] = {vr[0] - vrn * en[0] - (wr[1] * en[2] - wr[2] * en[1]),
-                                          vr[1] - vrn * en[1] - (wr[2] * en[0] - wr[0] * en[2]),
-                                          vr[2] - vrn * en[2] - (wr[0] * en[1] - wr[1] * en[0])};
+                    double vs[3];   /* sliding velocity on the true tangent plane */
+                    contact_tangential_velocity(vr, vrn, en, wr, en, vs);
                     roughness_update(&rough, (uint64_t)(id[i] < id[j] ? id[i] : id[j]),
                                      (uint64_t)(id[i] < id[j] ? id[j] : id[i]), step, n_ref,
                                      sqrt(contact_radius_sq), sqrt(vs[0] * vs[0] + vs[1] * vs[1] + vs[2] * vs[2]),
@@ -135,10 +134,8 @@ static ALWAYS_INLINE void pair_loop(dem_system *s, const enum normal_model norma
                     const double cri = ri - 0.5 * delta, crj = rj - 0.5 * delta;
                     const double wr[3] = {cri * w[i][0] + crj * w[j][0], cri * w[i][1] + crj * w[j][1],
                                           cri * w[i][2] + crj * w[j][2]};
-                    const double vt[3] = {vr[0] - vn * en_f[0] - (wr[1] * en[2] - wr[2] * en[1]),
-                                          vr[1] - vn * en_f[1] - (wr[2] * en[0] - wr[0] * en[2]),
-                                          vr[2] - vn * en_f[2] - (wr[0] * en[1] - wr[1] * en[0])};
-                    double ft[3];
+                    double vt[3], ft[3];
+                    contact_tangential_velocity(vr, vn, en_f, wr, en, vt);
                     tangential_history(h, en_f, vt, n, c->friction, dt, ft);
                     fc[0] += ft[0]; fc[1] += ft[1]; fc[2] += ft[2];
                     /* torque = lever x force, lever -cr en for i and +cr en for j (force -ft) */

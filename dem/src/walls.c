@@ -118,10 +118,10 @@ static ALWAYS_INLINE void wall_loop(dem_system *s, const enum normal_model norma
                 contact_radius_sq = contact_radius_sq_wall(ri, delta);
             if (surface == SURFACE_ROUGHNESS) {   /* keyed on (wall, particle id) */
                 const double *wi = p->omega[i], cr = ri - 0.5 * delta;
+                const double wr[3] = {cr * wi[0], cr * wi[1], cr * wi[2]};
                 const double vin = vi[0] * en[0] + vi[1] * en[1] + vi[2] * en[2];
-                const double vs[3] = {vi[0] - vin * en[0] - cr * (wi[1] * en[2] - wi[2] * en[1]),
-                                      vi[1] - vin * en[1] - cr * (wi[2] * en[0] - wi[0] * en[2]),
-                                      vi[2] - vin * en[2] - cr * (wi[0] * en[1] - wi[1] * en[0])};
+                double vs[3];   /* sliding velocity on the true tangent plane */
+                contact_tangential_velocity(vi, vin, en, wr, en, vs);
                 roughness_update(&s->models.roughness, ~(uint64_t)k, (uint64_t)p->id[i], s->step, en,
                                  sqrt(contact_radius_sq), sqrt(vs[0] * vs[0] + vs[1] * vs[1] + vs[2] * vs[2]),
                                  dt, h + h_surf);
@@ -138,10 +138,9 @@ static ALWAYS_INLINE void wall_loop(dem_system *s, const enum normal_model norma
             const double *wi = p->omega[i];
             const double cr = ri - 0.5 * delta;
             if (tangential == TANGENTIAL_HISTORY) {
-                const double vt[3] = {vi[0] - vn * en_f[0] - cr * (wi[1] * en[2] - wi[2] * en[1]),
-                                      vi[1] - vn * en_f[1] - cr * (wi[2] * en[0] - wi[0] * en[2]),
-                                      vi[2] - vn * en_f[2] - cr * (wi[0] * en[1] - wi[1] * en[0])};
-                double ft[3];
+                const double wr[3] = {cr * wi[0], cr * wi[1], cr * wi[2]};
+                double vt[3], ft[3];
+                contact_tangential_velocity(vi, vn, en_f, wr, en, vt);
                 tangential_history(h, en_f, vt, n, c->friction, dt, ft);
                 fc[0] += ft[0]; fc[1] += ft[1]; fc[2] += ft[2];
                 p->torque[i][0] -= cr * (en[1] * ft[2] - en[2] * ft[1]);

@@ -68,6 +68,17 @@ typedef struct normal_result {
     double gammat;   /* tangential damping [N s/m] */
 } normal_result;
 
+/* Relative tangential velocity of the contact points: v_r - v_n n_f - w_r x n, with
+ * w_r = c_i omega_i + c_j omega_j (levers c to the centre of the overlap), n the geometric
+ * normal and n_f the one the forces use (they differ under the roughness model). */
+static inline void contact_tangential_velocity(const double vr[3], double vn, const double n_f[3],
+                                               const double wr[3], const double n[3], double vt[3])
+{
+    vt[0] = vr[0] - vn * n_f[0] - (wr[1] * n[2] - wr[2] * n[1]);
+    vt[1] = vr[1] - vn * n_f[1] - (wr[2] * n[0] - wr[0] * n[2]);
+    vt[2] = vr[2] - vn * n_f[2] - (wr[0] * n[1] - wr[1] * n[0]);
+}
+
 /* Contact radius of two spheres at centre distance d (seed 002, beside eq. 5; edinburgh and sjkr use it); a wall is the
  * limit R_j -> infinity, a^2 = 2 R_i delta - delta^2. */
 static inline double contact_radius_sq_pair(double ri, double rj, double d)
