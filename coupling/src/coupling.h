@@ -1,0 +1,60 @@
+/* The coupling session: what the OpenFOAM solver calls (through foam/'s adapter), once per fluid
+ * time step. It owns the DEM system (dem/) and the coupling state; all arrays are flat and in
+ * SI units; the adapter converts OpenFOAM's kinematic pressure (p / rho_f) before calling.
+ *
+ *   c = coupling_create(case, mesh, rho_f, nu_f, dt_f)   reads constant/demProperties and
+ *                                                         constant/couplingProperties
+ *   each fluid step:
+ *     coupling_evolve(c, U, grad_p)    couplingInterval DEM steps with the drag of the current
+ *                                      fluid field (implicit: re-evaluated with each particle's
+ *                                      current velocity), then void fraction, K_sl and sources
+ *     alpha = coupling_alpha(c)        [ncells] fluid volume fraction (floor alphaMin)
+ *     ksl = coupling_ksl(c)            [ncells] implicit exchange coefficient [kg/(m^3 s)]
+ *     up = coupling_particle_velocity(c)   [ncells][3] K-weighted particle velocity [m/s]:
+ *                                      the fluid momentum source is ksl (up - U_f)
+ *     f = coupling_explicit_source(c)  [ncells][3] other force density on the fluid [N/m^3]
+ *                                      (model A: the particles' pressure-gradient reaction is in
+ *                                      the equations, not here)
+ *     coupling_write(c, time)          particles to <case>/particles.h5 / .xdmf
+ *   coupling_free(c) prints the time split (DEM, coupling).
+ */
+#ifndef CPL_COUPLING_H
+#define CPL_COUPLING_H
+
+#include "mesh.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct coupling coupling;
+
+enum cpl_model_type { CPL_MODEL_A, CPL_MODEL_B };
+
+/* mesh: filled by cpl_mesh_init (the session takes it over). rho_f [kg/m^3], nu_f [m^2/s],
+ * dt_f: the fluid time step [s], which must equal couplingInterval x the DEM timeStep. Errors in
+ * the dictionaries stop the program with file, line and key. */
+coupling *coupling_create(const char *case_dir, cpl_mesh *mesh, double rho_f, double nu_f, double dt_f);
+void coupling_free(coupling *c);
+
+/* U: fluid velocity per cell [m/s]; grad_p: pressure gradient per cell [Pa/m]. */
+void coupling_evolve(coupling *c, const double (*U)[3], const double (*grad_p)[3]);
+
+const double *coupling_alpha(const coupling *c);
+const double *coupling_ksl(const coupling *c);
+const double (*coupling_particle_velocity(const coupling *c))[3];
+const double (*coupling_explicit_source(const coupling *c))[3];
+enum cpl_model_type coupling_model_type(const coupling *c);
+int coupling_interval(const coupling *c);       /* DEM steps per fluid step */
+int coupling_particle_count(const coupling *c);
+/* Mean particle velocity [m/s] and position [m] (for the tutorials' checks and the log). */
+void coupling_particle_means(const coupling *c, double v[3], double x[3]);
+
+void coupling_write(coupling *c, double time);
+/* Wall seconds spent so far in the DEM and in the coupling layer. */
+void coupling_timings(const coupling *c, double *dem_s, double *coupling_s);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

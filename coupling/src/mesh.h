@@ -1,0 +1,45 @@
+/* The fluid mesh as the coupling layer sees it: OpenFOAM's polyMesh arrays, copied once from the
+ * adapter (points, faces, owner, neighbour; cell centres and volumes), plus what the layer
+ * derives from them (face centres and area vectors, cell -> faces, a search grid).
+ * Particle location: walk from the last known cell; a full search only when the walk is lost. */
+#ifndef CPL_MESH_H
+#define CPL_MESH_H
+
+typedef struct cpl_mesh {
+    int npoints, nfaces, ninternal_faces, ncells;
+    double (*points)[3];
+    int *face_start;            /* CSR: points of face f are face_points[face_start[f] .. face_start[f+1]) */
+    int *face_points;
+    int *owner;                 /* nfaces */
+    int *neighbour;             /* ninternal_faces (internal faces first, as OpenFOAM orders them) */
+    double (*cell_centre)[3];   /* ncells */
+    double *cell_volume;        /* ncells [m^3] */
+    /* derived by cpl_mesh_init */
+    double (*face_centre)[3];
+    double (*face_area)[3];     /* area vector, pointing out of the owner [m^2] */
+    int *cell_face_start;       /* CSR: faces of cell c */
+    int *cell_faces;
+    double bounds_min[3], bounds_max[3];
+    void *search;               /* private: grid of cells for the full search */
+} cpl_mesh;
+
+/* Copy the arrays (the caller keeps its own) and derive the rest. cell_centre / cell_volume may
+ * be NULL: then they are computed from the faces. Returns 0, or -1 with a message on stderr. */
+int cpl_mesh_init(cpl_mesh *m, int npoints, const double (*points)[3], int nfaces, const int *face_start,
+                  const int *face_points, int ninternal_faces, const int *owner, const int *neighbour,
+                  int ncells, const double (*cell_centre)[3], const double *cell_volume);
+void cpl_mesh_free(cpl_mesh *m);
+
+/* 1 if x lies inside cell c (on the inner side of every face plane; OpenFOAM cells are taken as
+ * convex with planar faces for this test). */
+int cpl_mesh_inside(const cpl_mesh *m, int c, const double x[3]);
+
+/* The cell containing x: walk from `guess` (or full search if guess < 0 or the walk is lost);
+ * -1 if x is outside the mesh. *searched (may be NULL) is set to 1 when a full search was used. */
+int cpl_mesh_locate(const cpl_mesh *m, const double x[3], int guess, int *searched);
+
+/* A box mesh of nx x ny x nz hex cells in OpenFOAM's ordering (internal faces first, owner <
+ * neighbour, boundary faces after), for tests and for the tutorials' checks. */
+int cpl_mesh_box(cpl_mesh *m, const double lo[3], const double hi[3], int nx, int ny, int nz);
+
+#endif
