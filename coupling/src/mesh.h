@@ -5,6 +5,10 @@
 #ifndef CPL_MESH_H
 #define CPL_MESH_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct cpl_mesh {
     int npoints, nfaces, ninternal_faces, ncells;
     double (*points)[3];
@@ -41,5 +45,34 @@ int cpl_mesh_locate(const cpl_mesh *m, const double x[3], int guess, int *search
 /* A box mesh of nx x ny x nz hex cells in OpenFOAM's ordering (internal faces first, owner <
  * neighbour, boundary faces after), for tests and for the tutorials' checks. */
 int cpl_mesh_box(cpl_mesh *m, const double lo[3], const double hi[3], int nx, int ny, int nz);
+
+/* Extensions (mesh.c). */
+
+/* The cell across face f from cell c; -1 for a boundary face. */
+static inline int cpl_mesh_other_cell(const cpl_mesh *m, int f, int c)
+{
+    if (f >= m->ninternal_faces) return -1;
+    return m->owner[f] == c ? m->neighbour[f] : m->owner[f];
+}
+
+/* Distance from x to the nearest face plane of cell c [m], positive when x is inside all of them
+ * (a sphere of radius r about x then lies in the cell if the distance is >= r). */
+double cpl_mesh_depth(const cpl_mesh *m, int c, const double x[3]);
+
+/* A box mesh of nx x ny x nz coarse hex cells in which the coarse cells (i, j, k) with
+ * rlo <= (i, j, k) < rhi are split 2 x 2 x 2, as a refinement would: the coarse cells facing the
+ * refined block have split faces (more than 6 faces) and faces carry the hanging points, so the mesh
+ * is genuinely polyhedral. OpenFOAM ordering. For tests. */
+int cpl_mesh_box_refined(cpl_mesh *m, const double lo[3], const double hi[3], int nx, int ny, int nz,
+                         const int rlo[3], const int rhi[3]);
+
+/* Move every point by map(x, ctx) and re-derive the geometry (face centres and areas, cell
+ * centres and volumes, recomputed from the faces, and the search grid). The map must keep faces
+ * planar for cpl_mesh_inside to be exact (a shear or a per-axis stretch does). For tests. */
+int cpl_mesh_map_points(cpl_mesh *m, void (*map)(double x[3], void *ctx), void *ctx);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

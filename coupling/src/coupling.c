@@ -1,0 +1,324 @@
+/* The coupling session (coupling.h): the DEM system, the fluid mesh, the void fraction, the
+ * fluid forces on the particles and the fields handed to the fluid.
+ *
+ * Order within coupling_evolve (the fluid has just solved U, p of the last step):
+ *   1. forces: gather u_f, alpha, grad p at the particles (positions unchanged since the last
+ *      void-fraction update) and evaluate the drag (particle_forces.h);
+ *   2. couplingInterval DEM steps, each with the fluid force at the particle's current velocity
+ *      (implicit: beta (u_f - v); explicit: frozen), held in p->f_ext;
+ *   3. void fraction with the new positions; gather, evaluate the forces again with the same
+ *      weights and velocities, and spread them onto the cells (exchange.h), so that what the
+ *      fluid receives balances what the particles feel to round-off.
+ * Per-particle coupling data is kept by particle id, since the DEM re-sorts its arrays. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "case.h"
+#include "coupling.h"
+#include "dict.h"
+#include "error.h"
+#include "exchange.h"
+#include "interpolate.h"
+#include "io.h"
+#include "particle_forces.h"
+#include "system.h"
+#include "timestep.h"
+#include "voidfraction.h"
+
+struct coupling {
+    char case_dir[4096];
+    dem_system s;
+    run_settings rs;
+    cpl_mesh mesh;
+    cpl_voidfraction vf;
+    enum cpl_interp_scheme interp_scheme;
+    cpl_interp interp_u, interp_gp;
+    cpl_force_params params;
+    cpl_fluid_forces forces;
+    int interval;
+    /* per particle (current DEM order), rebuilt each exchange */
+    int np_cap;
+    int *cell;
+    double *d, *volume, *alpha_p;
+    double (*u_p)[3], (*gp_p)[3];
+    /* per particle id: the last known cell and the fluid force to apply */
+    int64_t id_cap;
+    int *cell_of_id;
+    double *beta_of_id;
+    double (*uf_of_id)[3], (*fconst_of_id)[3];   /* f_exchange + f_equation */
+    /* per cell */
+    double *ksl;
+    double (*up)[3], (*source)[3];
+    particle_writer *writer;
+    FILE *means;
+    double dem_seconds, coupling_seconds;
+    long outside_reported;
+};
+
+static double now(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+static void read_coupling_properties(coupling *c, double dt_f, double *alpha_min, enum cpl_vf_model *vf_model,
+                                     double *kernel_width, double *kernel_cutoff)
+{
+    char path[4200];
+    snprintf(path, sizeof path, "%s/constant/couplingProperties", c->case_dir);
+    dict *d = dict_read(path);
+    c->interval = (int)dict_label(d, "couplingInterval", 1, 1000000);
+    const double dt_dem = c->s.dt;
+    if (fabs(dt_f - c->interval * dt_dem) > 1e-9 * dt_f)
+        dict_fatal(d, "couplingInterval", "the fluid time step (system/controlDict deltaT %g s) must equal "
+                   "couplingInterval x the DEM timeStep (%d x %g s = %g s)", dt_f, c->interval, dt_dem,
+                   c->interval * dt_dem);
+    const dict *v = dict_sub(d, "voidFraction");
+    static const char *const vf_names[] = {"centre", "divided", "gaussian", 0};
+    *vf_model = (enum cpl_vf_model)dict_choice(v, "model", vf_names);
+    *alpha_min = dict_scalar_opt(v, "alphaMin", 0.3, 0.01, 0.99);
+    *kernel_width = *vf_model == CPL_VF_GAUSSIAN ? dict_scalar_opt(v, "kernelWidth", 0.5, 0.05, 20.0) : 0.0;
+    *kernel_cutoff = *vf_model == CPL_VF_GAUSSIAN ? dict_scalar_opt(v, "kernelCutoff", 3.0, 1.0, 10.0) : 0.0;
+    c->params.drag = (enum cpl_drag_law)dict_choice(d, "drag", cpl_drag_law_names);
+    c->params.model = (enum cpl_model_type)dict_choice(d, "momentumCoupling", cpl_model_type_names);
+    c->params.exchange = (enum cpl_exchange_mode)dict_choice_opt(d, "exchange", cpl_exchange_mode_names,
+                                                                 CPL_EXCHANGE_IMPLICIT);
+    static const char *const interp_names[] = {"cell", "cellLinear", 0};
+    c->interp_scheme = dict_choice_opt(d, "interpolation", interp_names, 0) ? CPL_INTERP_LINEAR : CPL_INTERP_CELL;
+    dict_check_unused(d);
+    dict_free(d);
+}
+
+static void grow_particles(coupling *c, int n)
+{
+    if (n <= c->np_cap) return;
+    c->np_cap = n + n / 2 + 16;
+    c->cell = dem_realloc(c->cell, (size_t)c->np_cap * sizeof *c->cell);
+    c->d = dem_realloc(c->d, (size_t)c->np_cap * sizeof *c->d);
+    c->volume = dem_realloc(c->volume, (size_t)c->np_cap * sizeof *c->volume);
+    c->alpha_p = dem_realloc(c->alpha_p, (size_t)c->np_cap * sizeof *c->alpha_p);
+    c->u_p = dem_realloc(c->u_p, (size_t)c->np_cap * sizeof *c->u_p);
+    c->gp_p = dem_realloc(c->gp_p, (size_t)c->np_cap * sizeof *c->gp_p);
+}
+
+static void grow_ids(coupling *c)
+{
+    int64_t max_id = 0;
+    for (int i = 0; i < c->s.p.n; i++) if (c->s.p.id[i] + 1 > max_id) max_id = c->s.p.id[i] + 1;
+    if (max_id <= c->id_cap) return;
+    const int64_t old = c->id_cap;
+    c->id_cap = max_id + max_id / 2 + 16;
+    c->cell_of_id = dem_realloc(c->cell_of_id, (size_t)c->id_cap * sizeof *c->cell_of_id);
+    c->beta_of_id = dem_realloc(c->beta_of_id, (size_t)c->id_cap * sizeof *c->beta_of_id);
+    c->uf_of_id = dem_realloc(c->uf_of_id, (size_t)c->id_cap * sizeof *c->uf_of_id);
+    c->fconst_of_id = dem_realloc(c->fconst_of_id, (size_t)c->id_cap * sizeof *c->fconst_of_id);
+    for (int64_t k = old; k < c->id_cap; k++) {   /* new particles: no fluid force until evaluated */
+        c->cell_of_id[k] = -1;
+        c->beta_of_id[k] = 0.0;
+        for (int q = 0; q < 3; q++) c->uf_of_id[k][q] = c->fconst_of_id[k][q] = 0.0;
+    }
+}
+
+static cpl_cell_weights weights_of(const coupling *c)
+{
+    cpl_cell_weights w = {c->vf.np, c->vf.w_start, c->vf.w_cell, c->vf.w};
+    return w;
+}
+
+/* Void fraction with the particles' current positions (cells by id as the walk's start). */
+static void update_void_fraction(coupling *c)
+{
+    particles *p = &c->s.p;
+    grow_ids(c);
+    grow_particles(c, p->n);
+    for (int i = 0; i < p->n; i++) c->cell[i] = c->cell_of_id[p->id[i]];
+    const int outside = cpl_vf_compute(&c->vf, &c->mesh, p->n, (const double (*)[3])p->x, p->radius, c->cell);
+    if (outside < 0) dem_fatal("coupling: the void fraction could not be computed (see above)");
+    if (outside > 0 && outside != c->outside_reported) {
+        dem_warning("coupling: %d particle(s) lie outside the fluid mesh at t = %g s; they feel no fluid "
+                    "force and give none to the fluid", outside, c->s.time);
+        c->outside_reported = outside;
+    }
+    for (int i = 0; i < p->n; i++) c->cell_of_id[p->id[i]] = c->cell[i];
+}
+
+/* Fluid quantities at the particles and their forces, for the current weights and velocities. */
+static void evaluate_forces(coupling *c, const double (*U)[3], const double (*grad_p)[3])
+{
+    particles *p = &c->s.p;
+    const cpl_cell_weights w = weights_of(c);
+    cpl_gather_scalar(&w, c->vf.alpha, c->alpha_p);
+    if (c->interp_scheme == CPL_INTERP_CELL) {   /* the spreading weights: exact balance */
+        cpl_gather_vector(&w, U, c->u_p);
+        cpl_gather_vector(&w, grad_p, c->gp_p);
+    } else {
+        cpl_interp_set_field(&c->interp_u, &c->mesh, &U[0][0]);
+        cpl_interp_set_field(&c->interp_gp, &c->mesh, &grad_p[0][0]);
+        cpl_interp_particles(&c->interp_u, &c->mesh, p->n, c->cell, (const double (*)[3])p->x, &c->u_p[0][0]);
+        cpl_interp_particles(&c->interp_gp, &c->mesh, p->n, c->cell, (const double (*)[3])p->x, &c->gp_p[0][0]);
+    }
+    for (int i = 0; i < p->n; i++) {
+        c->d[i] = 2.0 * p->radius[i];
+        c->volume[i] = 4.0 / 3.0 * M_PI * p->radius[i] * p->radius[i] * p->radius[i];
+    }
+    const cpl_particle_fluid in = {p->n, (const double (*)[3])p->v, c->d, c->volume,
+                                   (const double (*)[3])c->u_p, (const double (*)[3])c->gp_p, c->alpha_p, c->cell};
+    cpl_fluid_forces_eval(&c->params, &in, &c->forces);
+    for (int i = 0; i < p->n; i++) {
+        const int64_t id = p->id[i];
+        c->beta_of_id[id] = c->forces.beta[i];
+        for (int q = 0; q < 3; q++) {
+            c->uf_of_id[id][q] = c->forces.u_f[i][q];
+            c->fconst_of_id[id][q] = c->forces.f_exchange[i][q] + c->forces.f_equation[i][q];
+        }
+    }
+}
+
+/* p->f_ext = the fluid force at each particle's current velocity (cpl_fluid_force, by id). */
+static void apply_fluid_forces(coupling *c)
+{
+    particles *p = &c->s.p;
+    for (int i = 0; i < p->n; i++) {
+        const int64_t id = p->id[i];
+        const double b = c->beta_of_id[id];
+        for (int q = 0; q < 3; q++)
+            p->f_ext[i][q] = b * (c->uf_of_id[id][q] - p->v[i][q]) + c->fconst_of_id[id][q];
+    }
+}
+
+static void write_means(coupling *c)
+{
+    double v[3], x[3];
+    coupling_particle_means(c, v, x);
+    fprintf(c->means, "%.9g %d %.9g %.9g %.9g %.9g %.9g %.9g\n", c->s.time, c->s.p.n, x[0], x[1], x[2], v[0], v[1], v[2]);
+    fflush(c->means);
+}
+
+coupling *coupling_create(const char *case_dir, cpl_mesh *mesh, double rho_f, double nu_f, double dt_f)
+{
+    coupling *c = calloc(1, sizeof *c);
+    if (!c) dem_fatal("coupling: out of memory");
+    snprintf(c->case_dir, sizeof c->case_dir, "%s", case_dir);
+    c->mesh = *mesh;                       /* the session takes the mesh over */
+    memset(mesh, 0, sizeof *mesh);
+
+    system_init(&c->s);
+    case_read(case_dir, &c->s, &c->rs, 0);
+    const double vmax = c->rs.max_expected_velocity > 0 ? c->rs.max_expected_velocity
+                                                        : case_default_max_velocity(&c->s);
+    timestep_check(&c->s, vmax, c->rs.timestep_override, c->rs.timestep_source);
+    system_setup(&c->s);
+
+    double alpha_min, kernel_width, kernel_cutoff;
+    enum cpl_vf_model vf_model;
+    read_coupling_properties(c, dt_f, &alpha_min, &vf_model, &kernel_width, &kernel_cutoff);
+    c->params.rho_f = rho_f;
+    c->params.mu_f = rho_f * nu_f;
+    for (int q = 0; q < 3; q++) c->params.gravity[q] = c->s.gravity[q];
+    if (cpl_force_params_check(&c->params) != 0) dem_fatal("coupling: bad fluid parameters (see above)");
+    if (cpl_vf_init(&c->vf, &c->mesh, vf_model, alpha_min) != 0) dem_fatal("coupling: void fraction setup failed");
+    if (vf_model == CPL_VF_GAUSSIAN) { c->vf.kernel_width = kernel_width; c->vf.kernel_cutoff = kernel_cutoff; }
+    if (c->interp_scheme == CPL_INTERP_LINEAR &&
+        (cpl_interp_init(&c->interp_u, &c->mesh, CPL_INTERP_LINEAR, 3) != 0 ||
+         cpl_interp_init(&c->interp_gp, &c->mesh, CPL_INTERP_LINEAR, 3) != 0))
+        dem_fatal("coupling: interpolation setup failed");
+    cpl_fluid_forces_init(&c->forces);
+
+    const int nc = c->mesh.ncells;
+    c->ksl = calloc((size_t)nc, sizeof *c->ksl);
+    c->up = calloc((size_t)nc, sizeof *c->up);
+    c->source = calloc((size_t)nc, sizeof *c->source);
+    if (!c->ksl || !c->up || !c->source) dem_fatal("coupling: out of memory for %d cells", nc);
+    update_void_fraction(c);
+
+    char path[4200];
+    snprintf(path, sizeof path, "%s/particles", case_dir);
+    c->writer = io_open_writer(path, 0);
+    snprintf(path, sizeof path, "%s/postProcessing", case_dir);
+    char cmd[4400];
+    snprintf(cmd, sizeof cmd, "mkdir -p '%s'", path);
+    if (system(cmd) != 0) dem_fatal("coupling: cannot create %s", path);
+    snprintf(path, sizeof path, "%s/postProcessing/particles.dat", case_dir);
+    c->means = fopen(path, "w");
+    if (!c->means) dem_fatal("coupling: cannot write %s", path);
+    fprintf(c->means, "# time [s], particles, mean position x y z [m], mean velocity x y z [m/s]\n");
+    write_means(c);
+    printf("coupling: %d particles, %d fluid cells; %d DEM steps of %g s per fluid step; void fraction %s "
+           "(alphaMin %g), drag %s, model %s, %s exchange, %s interpolation\n",
+           c->s.p.n, nc, c->interval, c->s.dt, vf_model == CPL_VF_CENTRE ? "centre" : vf_model == CPL_VF_DIVIDED ? "divided" : "gaussian",
+           alpha_min, cpl_drag_law_names[c->params.drag], cpl_model_type_names[c->params.model],
+           cpl_exchange_mode_names[c->params.exchange], c->interp_scheme == CPL_INTERP_CELL ? "cell" : "cellLinear");
+    return c;
+}
+
+void coupling_evolve(coupling *c, const double (*U)[3], const double (*grad_p)[3])
+{
+    double t0 = now();
+    evaluate_forces(c, U, grad_p);                     /* 1 */
+    double t1 = now();
+    c->coupling_seconds += t1 - t0;
+    for (int k = 0; k < c->interval; k++) {            /* 2 */
+        apply_fluid_forces(c);   /* implicit: at the current velocity; explicit: frozen (beta 0) */
+        system_step(&c->s);
+    }
+    system_check_health(&c->s);
+    double t2 = now();
+    c->dem_seconds += t2 - t1;
+    update_void_fraction(c);                            /* 3 */
+    evaluate_forces(c, U, grad_p);
+    const cpl_cell_weights w = weights_of(c);
+    cpl_exchange_cells(&w, &c->forces, (const double (*)[3])c->s.p.v, c->mesh.ncells, c->mesh.cell_volume,
+                       c->ksl, c->up, c->source);
+    write_means(c);
+    c->coupling_seconds += now() - t2;
+}
+
+const double *coupling_alpha(const coupling *c) { return c->vf.alpha; }
+const double *coupling_ksl(const coupling *c) { return c->ksl; }
+const double (*coupling_particle_velocity(const coupling *c))[3] { return (const double (*)[3])c->up; }
+const double (*coupling_explicit_source(const coupling *c))[3] { return (const double (*)[3])c->source; }
+enum cpl_model_type coupling_model_type(const coupling *c) { return c->params.model; }
+int coupling_interval(const coupling *c) { return c->interval; }
+int coupling_particle_count(const coupling *c) { return c->s.p.n; }
+
+void coupling_particle_means(const coupling *c, double v[3], double x[3])
+{
+    const particles *p = &c->s.p;
+    for (int q = 0; q < 3; q++) v[q] = x[q] = 0.0;
+    for (int i = 0; i < p->n; i++)
+        for (int q = 0; q < 3; q++) { v[q] += p->v[i][q]; x[q] += p->x[i][q]; }
+    for (int q = 0; q < 3; q++) if (p->n) { v[q] /= p->n; x[q] /= p->n; }
+}
+
+void coupling_write(coupling *c, double time)
+{
+    (void)time;   /* the snapshot carries the DEM's own time, equal to the fluid's at an exchange */
+    io_write_snapshot(c->writer, &c->s.p, c->s.time, c->s.step);
+}
+
+void coupling_timings(const coupling *c, double *dem_s, double *coupling_s)
+{
+    *dem_s = c->dem_seconds;
+    *coupling_s = c->coupling_seconds;
+}
+
+void coupling_free(coupling *c)
+{
+    if (!c) return;
+    printf("coupling: wall time DEM %.2f s, coupling %.2f s\n", c->dem_seconds, c->coupling_seconds);
+    io_close_writer(c->writer);
+    if (c->means) fclose(c->means);
+    cpl_fluid_forces_free(&c->forces);
+    if (c->interp_scheme == CPL_INTERP_LINEAR) { cpl_interp_free(&c->interp_u); cpl_interp_free(&c->interp_gp); }
+    cpl_vf_free(&c->vf);
+    cpl_mesh_free(&c->mesh);
+    system_free(&c->s);
+    free(c->cell); free(c->d); free(c->volume); free(c->alpha_p); free(c->u_p); free(c->gp_p);
+    free(c->cell_of_id); free(c->beta_of_id); free(c->uf_of_id); free(c->fconst_of_id);
+    free(c->ksl); free(c->up); free(c->source);
+    free(c);
+}

@@ -1,0 +1,53 @@
+/* Fluid fields at the particles: cell-centred values (fluid velocity, pressure gradient)
+ * interpolated to particle positions.
+ *
+ *   cell        the value of the particle's cell.
+ *   cellLinear  least-squares linear reconstruction: u(x) = u_c + G_c (x - x_c), G_c minimising
+ *               sum over the face neighbours n of |u_n - u_c - G_c (x_n - x_c)|^2 / |x_n - x_c|^2
+ *               (OpenFOAM's leastSquares gradient without boundary values). A linear field is
+ *               reproduced exactly (to round-off) in every cell whose neighbours' centres span
+ *               3D, boundary cells included. This is NOT OpenFOAM's cellPoint (tetrahedra with
+ *               inverse-distance point values): it is linear-exact on any mesh but not continuous
+ *               across faces, and not bounded (no limiter).
+ * A direction the neighbours do not span (one cell thick meshes) gets a zero gradient. */
+#ifndef CPL_INTERPOLATE_H
+#define CPL_INTERPOLATE_H
+
+#include "mesh.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+enum cpl_interp_scheme { CPL_INTERP_CELL, CPL_INTERP_LINEAR };
+
+typedef struct cpl_interp {
+    enum cpl_interp_scheme scheme;
+    int ncells, ncomp;
+    double (*minv)[9];          /* cellLinear: inverse least-squares matrix of cell c [m^2] */
+    double *field;              /* [ncells][ncomp] copy of the last field */
+    double *grad;               /* [ncells][ncomp][3] its reconstructed gradient [field/m] */
+} cpl_interp;
+
+/* name: "cell" or "cellLinear". Returns 0, or -1 with a message on stderr. */
+int cpl_interp_scheme_parse(const char *name, enum cpl_interp_scheme *scheme);
+
+/* For fields of ncomp components per cell on mesh m. Returns 0, or -1 with a message. */
+int cpl_interp_init(cpl_interp *ip, const cpl_mesh *m, enum cpl_interp_scheme scheme, int ncomp);
+void cpl_interp_free(cpl_interp *ip);
+
+/* Take a new field ([ncells][ncomp], copied) and reconstruct its gradients (cellLinear). */
+void cpl_interp_set_field(cpl_interp *ip, const cpl_mesh *m, const double *field);
+
+/* The field at x in cell `cell` (from cpl_mesh_locate): out[ncomp]. Returns 0, or -1 (out set
+ * to 0) when cell < 0 (particle outside the mesh). */
+int cpl_interp_at(const cpl_interp *ip, const cpl_mesh *m, int cell, const double x[3], double *out);
+
+/* The same for np particles: out[np][ncomp]; returns the number outside (cell < 0, out 0). */
+int cpl_interp_particles(const cpl_interp *ip, const cpl_mesh *m, int np, const int *cell,
+                         const double (*x)[3], double *out);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

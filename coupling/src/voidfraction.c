@@ -1,0 +1,242 @@
+/* Void fraction models (centre, divided, gaussian) and the per-particle cell weights they leave
+ * behind for the momentum exchange. See voidfraction.h. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "voidfraction.h"
+
+int cpl_vf_model_parse(const char *name, enum cpl_vf_model *model)
+{
+    if (!strcmp(name, "centre")) *model = CPL_VF_CENTRE;
+    else if (!strcmp(name, "divided")) *model = CPL_VF_DIVIDED;
+    else if (!strcmp(name, "gaussian")) *model = CPL_VF_GAUSSIAN;
+    else {
+        fprintf(stderr, "voidFraction model '%s' unknown: use centre, divided or gaussian\n", name);
+        return -1;
+    }
+    return 0;
+}
+
+void cpl_vf_free(cpl_voidfraction *vf)
+{
+    free(vf->sample); free(vf->vp); free(vf->alpha);
+    free(vf->w_start); free(vf->w_cell); free(vf->w);
+    free(vf->mark); free(vf->queue);
+    memset(vf, 0, sizeof *vf);
+}
+
+int cpl_vf_set_samples(cpl_voidfraction *vf, int nshell, int nper)
+{
+    if (nshell < 1 || nper < 4 || nper % 4 != 0 || (long)nshell * nper > 100000) {
+        fprintf(stderr, "divided void fraction: %d shells of %d points: need at least one shell and a "
+                "multiple of 4 points per shell\n", nshell, nper);
+        return -1;
+    }
+    double (*s)[3] = malloc((size_t)nshell * nper * sizeof *s);
+    if (!s) { fprintf(stderr, "divided void fraction: out of memory\n"); return -1; }
+    /* Shell k holds the volume between radii (k/K)^(1/3) and ((k+1)/K)^(1/3): its points sit at
+     * the volume median ((k + 1/2)/K)^(1/3). On each shell, a spiral of nper/2 points (uniform in
+     * z, which is uniform in area; nper/2 even, so none has z = 0; the half-step phase keeps them
+     * off the x and y planes) and their opposites, so a plane through the centre cuts exactly
+     * half of them. Each shell is turned about z so that shells do not line up. */
+    const double golden = M_PI * (3.0 - sqrt(5.0));
+    const int half = nper / 2;
+    int n = 0;
+    for (int k = 0; k < nshell; k++) {
+        const double rho = cbrt((k + 0.5) / nshell);
+        for (int j = 0; j < half; j++) {
+            const double z = 1.0 - (2.0 * j + 1.0) / half;
+            const double phi = (j + 0.5) * golden + 1.2 * k;
+            const double sxy = sqrt(1.0 - z * z);
+            const double p[3] = {rho * sxy * cos(phi), rho * sxy * sin(phi), rho * z};
+            for (int d = 0; d < 3; d++) { s[n][d] = p[d]; s[n + 1][d] = -p[d]; }
+            n += 2;
+        }
+    }
+    free(vf->sample);
+    vf->sample = s;
+    vf->nsample = n;
+    return 0;
+}
+
+int cpl_vf_init(cpl_voidfraction *vf, const cpl_mesh *m, enum cpl_vf_model model, double alpha_min)
+{
+    memset(vf, 0, sizeof *vf);
+    if (!(alpha_min >= 0.0 && alpha_min < 1.0)) {
+        fprintf(stderr, "void fraction: alphaMin = %g must be in [0, 1)\n", alpha_min);
+        return -1;
+    }
+    if (model != CPL_VF_CENTRE && model != CPL_VF_DIVIDED && model != CPL_VF_GAUSSIAN) {
+        fprintf(stderr, "void fraction: unknown model %d\n", (int)model);
+        return -1;
+    }
+    vf->model = model;
+    vf->alpha_min = alpha_min;
+    vf->kernel_width = 0.5;
+    vf->kernel_cutoff = 3.0;
+    vf->ncells = m->ncells;
+    vf->vp = calloc(m->ncells, sizeof(double));
+    vf->alpha = calloc(m->ncells, sizeof(double));
+    vf->mark = calloc(m->ncells, sizeof(unsigned));
+    vf->queue = calloc(m->ncells, sizeof(int));
+    vf->w_start = calloc(1, sizeof(int));
+    if (!vf->vp || !vf->alpha || !vf->mark || !vf->queue || !vf->w_start) {
+        fprintf(stderr, "void fraction: out of memory for %d cells\n", m->ncells);
+        cpl_vf_free(vf);
+        return -1;
+    }
+    for (int c = 0; c < m->ncells; c++) vf->alpha[c] = 1.0;
+    if (cpl_vf_set_samples(vf, 4, 16) != 0) { cpl_vf_free(vf); return -1; }
+    return 0;
+}
+
+/* Append (cell, weight) to the weight list; -1 when out of memory. */
+static int push(cpl_voidfraction *vf, int *nw, int cell, double w)
+{
+    if (*nw == vf->w_cap) {
+        const int cap = vf->w_cap ? 2 * vf->w_cap : 1024;
+        int *wc = realloc(vf->w_cell, cap * sizeof(int));
+        if (wc) vf->w_cell = wc;
+        double *ww = realloc(vf->w, cap * sizeof(double));
+        if (ww) vf->w = ww;
+        if (!wc || !ww) { fprintf(stderr, "void fraction: out of memory for %d weights\n", cap); return -1; }
+        vf->w_cap = cap;
+    }
+    vf->w_cell[*nw] = cell;
+    vf->w[*nw] = w;
+    (*nw)++;
+    return 0;
+}
+
+/* divided: each sample point's share to its own cell; points outside the mesh dropped and the
+ * rest renormalised. */
+static int weights_divided(cpl_voidfraction *vf, const cpl_mesh *m, const double x[3], double r, int c, int *nw)
+{
+    /* the whole sphere inside the cell (the common case of particles smaller than cells): every
+     * point would be found there, skip locating them */
+    if (cpl_mesh_depth(m, c, x) >= r) return push(vf, nw, c, 1.0);
+    const int first = *nw;
+    int inside = 0;
+    for (int k = 0; k < vf->nsample; k++) {
+        double xs[3];
+        for (int d = 0; d < 3; d++) xs[d] = x[d] + r * vf->sample[k][d];
+        const int cs = cpl_mesh_locate(m, xs, c, NULL);
+        if (cs < 0) continue;
+        inside++;
+        int j = first;
+        while (j < *nw && vf->w_cell[j] != cs) j++;
+        if (j < *nw) vf->w[j] += 1.0;
+        else if (push(vf, nw, cs, 1.0) != 0) return -1;
+    }
+    if (inside == 0) return push(vf, nw, c, 1.0);   /* only the centre is in the mesh */
+    for (int j = first; j < *nw; j++) vf->w[j] /= inside;
+    return 0;
+}
+
+/* gaussian: breadth-first through faces from the particle's cell, over cells whose centres are
+ * within the cutoff; weights V_c exp(-d^2 / 2 s^2) (the kernel times the cell's volume: the
+ * kernel's integral over the cell), normalised over the cells found. */
+static int weights_gaussian(cpl_voidfraction *vf, const cpl_mesh *m, const double x[3], double r, int c, int *nw)
+{
+    const double s = vf->kernel_width * 2.0 * r, cut = vf->kernel_cutoff * s;
+    if (++vf->stamp == 0) {   /* wrapped: clear the marks */
+        memset(vf->mark, 0, vf->ncells * sizeof(unsigned));
+        vf->stamp = 1;
+    }
+    int head = 0, tail = 0;
+    vf->queue[tail++] = c;
+    vf->mark[c] = vf->stamp;
+    const int first = *nw;
+    double d2min = INFINITY;
+    while (head < tail) {
+        const int a = vf->queue[head++];
+        double d2 = 0;
+        for (int d = 0; d < 3; d++) d2 += (m->cell_centre[a][d] - x[d]) * (m->cell_centre[a][d] - x[d]);
+        if (d2 < d2min) d2min = d2;
+        if (push(vf, nw, a, d2) != 0) return -1;   /* distance^2 for now, weight below */
+        for (int k = m->cell_face_start[a]; k < m->cell_face_start[a + 1]; k++) {
+            const int n = cpl_mesh_other_cell(m, m->cell_faces[k], a);
+            if (n < 0 || vf->mark[n] == vf->stamp) continue;
+            vf->mark[n] = vf->stamp;
+            double dn2 = 0;
+            for (int d = 0; d < 3; d++) dn2 += (m->cell_centre[n][d] - x[d]) * (m->cell_centre[n][d] - x[d]);
+            if (dn2 <= cut * cut) vf->queue[tail++] = n;
+        }
+    }
+    /* relative to the nearest centre, so that a kernel narrow compared with the cells cannot
+     * underflow to all zeros */
+    double sum = 0;
+    for (int j = first; j < *nw; j++) {
+        vf->w[j] = m->cell_volume[vf->w_cell[j]] * exp(-(vf->w[j] - d2min) / (2.0 * s * s));
+        sum += vf->w[j];
+    }
+    for (int j = first; j < *nw; j++) vf->w[j] /= sum;
+    return 0;
+}
+
+int cpl_vf_compute(cpl_voidfraction *vf, const cpl_mesh *m, int np, const double (*x)[3],
+                   const double *r, int *cell)
+{
+    if (np < 0 || m->ncells != vf->ncells) {
+        fprintf(stderr, "void fraction: %d particles, mesh of %d cells (set up for %d)\n", np, m->ncells, vf->ncells);
+        return -1;
+    }
+    for (int i = 0; i < np; i++)
+        if (!(r[i] > 0) || !isfinite(r[i])) {
+            fprintf(stderr, "void fraction: particle %d has radius %g m\n", i, r[i]);
+            return -1;
+        }
+    if (np + 1 > vf->np_cap) {
+        int *ws = realloc(vf->w_start, (np + 1) * sizeof(int));
+        if (!ws) { fprintf(stderr, "void fraction: out of memory for %d particles\n", np); return -1; }
+        vf->w_start = ws;
+        vf->np_cap = np + 1;
+    }
+    if (vf->model == CPL_VF_GAUSSIAN && !(vf->kernel_width > 0 && vf->kernel_cutoff > 0)) {
+        fprintf(stderr, "gaussian void fraction: kernel width %g and cutoff %g must be positive\n",
+                vf->kernel_width, vf->kernel_cutoff);
+        return -1;
+    }
+    int nw = 0, outside = 0;
+    vf->np = np;
+    for (int i = 0; i < np; i++) {
+        vf->w_start[i] = nw;
+        const int guess = cell[i] >= 0 && cell[i] < m->ncells ? cell[i] : -1;
+        const int c = cpl_mesh_locate(m, x[i], guess, NULL);
+        cell[i] = c;
+        if (c < 0) { outside++; continue; }
+        int rc = 0;
+        switch (vf->model) {
+        case CPL_VF_CENTRE: rc = push(vf, &nw, c, 1.0); break;
+        case CPL_VF_DIVIDED: rc = weights_divided(vf, m, x[i], r[i], c, &nw); break;
+        case CPL_VF_GAUSSIAN: rc = weights_gaussian(vf, m, x[i], r[i], c, &nw); break;
+        }
+        if (rc != 0) { vf->np = 0; vf->w_start[0] = 0; return -1; }
+    }
+    vf->w_start[np] = nw;
+    memset(vf->vp, 0, vf->ncells * sizeof(double));
+    for (int i = 0; i < np; i++) {
+        const double vol = 4.0 / 3.0 * M_PI * r[i] * r[i] * r[i];
+        for (int k = vf->w_start[i]; k < vf->w_start[i + 1]; k++) vf->vp[vf->w_cell[k]] += vf->w[k] * vol;
+    }
+    for (int c = 0; c < vf->ncells; c++) vf->alpha[c] = fmax(vf->alpha_min, 1.0 - vf->vp[c] / m->cell_volume[c]);
+    return outside;
+}
+
+void cpl_vf_spread(const cpl_voidfraction *vf, int ncomp, const double *q, double *out)
+{
+    memset(out, 0, (size_t)vf->ncells * ncomp * sizeof(double));
+    for (int i = 0; i < vf->np; i++)
+        for (int k = vf->w_start[i]; k < vf->w_start[i + 1]; k++)
+            for (int j = 0; j < ncomp; j++) out[(size_t)vf->w_cell[k] * ncomp + j] += vf->w[k] * q[(size_t)i * ncomp + j];
+}
+
+void cpl_vf_gather(const cpl_voidfraction *vf, int ncomp, const double *field, double *out)
+{
+    memset(out, 0, (size_t)vf->np * ncomp * sizeof(double));
+    for (int i = 0; i < vf->np; i++)
+        for (int k = vf->w_start[i]; k < vf->w_start[i + 1]; k++)
+            for (int j = 0; j < ncomp; j++) out[(size_t)i * ncomp + j] += vf->w[k] * field[(size_t)vf->w_cell[k] * ncomp + j];
+}

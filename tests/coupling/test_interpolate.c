@@ -1,0 +1,193 @@
+/* Interpolation to particles: cellLinear (least-squares linear reconstruction) reproduces a
+ * linear field u = a + B x at random points of a box, a sheared and graded mesh and a polyhedral
+ * refined mesh to 1e-10 (boundary cells included); cell gives the cell's value exactly; on a
+ * smooth field cellLinear converges at second order and cell at first; a one-cell-thick mesh
+ * gives no NaN; outside particles give -1 and 0. */
+#include <stdlib.h>
+
+#include "harness.h"
+#include "interpolate.h"
+#include "mesh.h"
+#include "rng.h"
+
+static const double A[3] = {1.0, -2.0, 0.5};
+static const double B[3][3] = {{0.3, -1.2, 2.0}, {0.7, 0.1, -0.4}, {-1.5, 0.9, 0.25}};   /* [1/s] */
+
+static void linear(const double x[3], double u[3])
+{
+    for (int i = 0; i < 3; i++) u[i] = A[i] + B[i][0] * x[0] + B[i][1] * x[1] + B[i][2] * x[2];
+}
+
+static double smooth(const double x[3]) { return sin(2.0 * x[0]) * cos(1.5 * x[1]) + exp(0.5 * x[2]); }
+
+/* Worst error of cellLinear on the linear field and of cell against the cell's own value, at npts
+ * random points located in mesh m. */
+static void linear_exact(const char *name, const cpl_mesh *m, int npts, unsigned seed)
+{
+    cpl_interp lin, cel;
+    if (cpl_interp_init(&lin, m, CPL_INTERP_LINEAR, 3) != 0 || cpl_interp_init(&cel, m, CPL_INTERP_CELL, 3) != 0) exit(1);
+    double *u = malloc(m->ncells * 3 * sizeof(double));
+    for (int c = 0; c < m->ncells; c++) linear(m->cell_centre[c], u + 3 * c);
+    cpl_interp_set_field(&lin, m, u);
+    cpl_interp_set_field(&cel, m, u);
+    rng g;
+    rng_seed(&g, seed);
+    double worst = 0, worst_cell = 0;
+    int found = 0, guess = -1;
+    while (found < npts) {
+        double x[3];
+        for (int d = 0; d < 3; d++) x[d] = m->bounds_min[d] + (m->bounds_max[d] - m->bounds_min[d]) * rng_uniform(&g);
+        const int c = cpl_mesh_locate(m, x, guess, NULL);
+        if (c < 0) continue;
+        guess = c;
+        found++;
+        double ui[3], ue[3], uc[3];
+        cpl_interp_at(&lin, m, c, x, ui);
+        cpl_interp_at(&cel, m, c, x, uc);
+        linear(x, ue);
+        for (int d = 0; d < 3; d++) {
+            worst = fmax(worst, fabs(ui[d] - ue[d]));
+            worst_cell = fmax(worst_cell, fabs(uc[d] - u[3 * c + d]));
+        }
+    }
+    char what[128];
+    printf("%s: cellLinear worst error on u = a + B x: %.3g m/s\n", name, worst);
+    snprintf(what, sizeof what, "%s: cellLinear reproduces a + B x (< 1e-10 m/s, |u| ~ 1)", name);
+    check_true(what, worst < 1e-10);
+    snprintf(what, sizeof what, "%s: cell gives the cell's value exactly", name);
+    check_true(what, worst_cell == 0.0);
+    free(u);
+    cpl_interp_free(&lin);
+    cpl_interp_free(&cel);
+}
+
+/* Mean error at random points of a smooth field on an n^3 box. */
+static void smooth_error(int n, double *err_linear, double *err_cell)
+{
+    const double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
+    cpl_mesh m;
+    if (cpl_mesh_box(&m, lo, hi, n, n, n) != 0) exit(1);
+    cpl_interp lin, cel;
+    if (cpl_interp_init(&lin, &m, CPL_INTERP_LINEAR, 1) != 0 || cpl_interp_init(&cel, &m, CPL_INTERP_CELL, 1) != 0) exit(1);
+    double *u = malloc(m.ncells * sizeof(double));
+    for (int c = 0; c < m.ncells; c++) u[c] = smooth(m.cell_centre[c]);
+    cpl_interp_set_field(&lin, &m, u);
+    cpl_interp_set_field(&cel, &m, u);
+    rng g;
+    rng_seed(&g, 7);
+    *err_linear = *err_cell = 0;
+    const int npts = 20000;
+    for (int k = 0; k < npts; k++) {
+        double x[3], ul, uc;
+        for (int d = 0; d < 3; d++) x[d] = rng_uniform(&g);
+        const int c = cpl_mesh_locate(&m, x, -1, NULL);
+        cpl_interp_at(&lin, &m, c, x, &ul);
+        cpl_interp_at(&cel, &m, c, x, &uc);
+        *err_linear += fabs(ul - smooth(x)) / npts;
+        *err_cell += fabs(uc - smooth(x)) / npts;
+    }
+    free(u);
+    cpl_interp_free(&lin);
+    cpl_interp_free(&cel);
+    cpl_mesh_free(&m);
+}
+
+static void shear_grade(double x[3], void *ctx)
+{
+    (void)ctx;
+    x[0] = x[0] * x[0];
+    x[2] = 2.0 * (x[2] + 0.5 * x[2] * x[2]);
+    x[0] += 0.1 * sin(2.0 * x[2]);
+    x[1] += 0.3 * x[0];
+    x[0] += 0.3 * x[2];
+}
+
+static void shear_linear(double x[3], void *ctx)
+{
+    (void)ctx;
+    x[1] = x[1] * (1.0 + 0.5 * x[1]);
+    x[0] += 0.3 * x[2];
+    x[1] += 0.2 * x[0];
+}
+
+int main(void)
+{
+    const double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
+    cpl_mesh m;
+    if (cpl_mesh_box(&m, lo, hi, 8, 6, 7) != 0) return 1;
+    linear_exact("box", &m, 5000, 1);
+
+    /* outside: -1 and zeros */
+    {
+        cpl_interp lin;
+        if (cpl_interp_init(&lin, &m, CPL_INTERP_LINEAR, 3) != 0) return 1;
+        const int cell[2] = {5, -1};
+        const double x[2][3] = {{0.1, 0.1, 0.1}, {2, 2, 2}};
+        double out[2][3] = {{9, 9, 9}, {9, 9, 9}};
+        double *u = malloc(m.ncells * 3 * sizeof(double));
+        for (int c = 0; c < 3 * m.ncells; c++) u[c] = 1.0;
+        cpl_interp_set_field(&lin, &m, u);
+        const int outside = cpl_interp_particles(&lin, &m, 2, cell, x, (double *)out);
+        check_true("outside particle: counted, value 0; inside one: uniform field 1",
+                   outside == 1 && out[1][0] == 0 && out[1][2] == 0 && fabs(out[0][1] - 1) < 1e-14);
+        free(u);
+        cpl_interp_free(&lin);
+    }
+    cpl_mesh_free(&m);
+
+    if (cpl_mesh_box(&m, lo, hi, 9, 7, 11) != 0 || cpl_mesh_map_points(&m, shear_grade, NULL) != 0) return 1;
+    linear_exact("skewed", &m, 5000, 2);
+    cpl_mesh_free(&m);
+
+    const double hi2[3] = {1, 0.8, 0.8};
+    const int rlo[3] = {1, 1, 1}, rhi[3] = {3, 3, 3};
+    if (cpl_mesh_box_refined(&m, lo, hi2, 5, 4, 4, rlo, rhi) != 0 || cpl_mesh_map_points(&m, shear_linear, NULL) != 0)
+        return 1;
+    linear_exact("refined polyhedral", &m, 5000, 3);
+    cpl_mesh_free(&m);
+
+    /* one cell thick: the unspanned z direction gets a zero gradient, x and y stay exact */
+    {
+        const double hi1[3] = {1, 1, 0.1};
+        if (cpl_mesh_box(&m, lo, hi1, 8, 8, 1) != 0) return 1;
+        cpl_interp lin;
+        if (cpl_interp_init(&lin, &m, CPL_INTERP_LINEAR, 1) != 0) return 1;
+        double *u = malloc(m.ncells * sizeof(double));
+        for (int c = 0; c < m.ncells; c++) u[c] = 1 + 2 * m.cell_centre[c][0] - 3 * m.cell_centre[c][1];
+        cpl_interp_set_field(&lin, &m, u);
+        const double x[3] = {0.33, 0.71, 0.02};
+        double v;
+        cpl_interp_at(&lin, &m, cpl_mesh_locate(&m, x, -1, NULL), x, &v);
+        check_true("one cell thick: finite, x-y linear field exact (1e-10)", isfinite(v) && fabs(v - (1 + 0.66 - 2.13)) < 1e-10);
+        free(u);
+        cpl_interp_free(&lin);
+        cpl_mesh_free(&m);
+    }
+
+    /* convergence on a smooth field: mean error ratio between h and h/2 */
+    {
+        double el8, ec8, el16, ec16;
+        smooth_error(8, &el8, &ec8);
+        smooth_error(16, &el16, &ec16);
+        printf("smooth field, mean error: cellLinear %.3g -> %.3g (ratio %.2f), cell %.3g -> %.3g (ratio %.2f)\n",
+               el8, el16, el8 / el16, ec8, ec16, ec8 / ec16);
+        check_true("cellLinear second order: error ratio h -> h/2 > 3.5", el8 / el16 > 3.5);
+        check_true("cell first order: error ratio h -> h/2 in 1.7 .. 2.3", ec8 / ec16 > 1.7 && ec8 / ec16 < 2.3);
+        check_true("cellLinear more accurate than cell (8^3)", el8 < 0.2 * ec8);
+    }
+
+    /* bad input */
+    {
+        cpl_interp ip;
+        enum cpl_interp_scheme s;
+        if (cpl_mesh_box(&m, lo, hi, 2, 2, 2) != 0) return 1;
+        fprintf(stderr, "(expected errors follow)\n");
+        check_true("scheme names parsed, cellPoint refused (not implemented)",
+                   cpl_interp_scheme_parse("cellLinear", &s) == 0 && s == CPL_INTERP_LINEAR &&
+                   cpl_interp_scheme_parse("cell", &s) == 0 && s == CPL_INTERP_CELL &&
+                   cpl_interp_scheme_parse("cellPoint", &s) == -1);
+        check_true("0 components refused", cpl_interp_init(&ip, &m, CPL_INTERP_CELL, 0) == -1);
+        cpl_mesh_free(&m);
+    }
+    return finish("test_interpolate");
+}

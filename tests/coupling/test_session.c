@@ -1,0 +1,84 @@
+/* The coupling session without OpenFOAM: a box mesh, a case written here, the fluid at rest
+ * with the hydrostatic pressure gradient (grad p = rho_f g) handed in every fluid step.
+ *  - One sphere (d 100 um, rho_p 3000, fluid rho_f 10, nu 1e-5) released at rest reaches the
+ *    Schiller-Naumann terminal velocity 0.1373 m/s within 1 %, for model A and model B.
+ *  - The fields handed to the fluid balance the particles' force: sum over cells of
+ *    V (K_sl (up - U) + S) equals minus the exchanged part of the fluid force on the particles
+ *    (model B: drag and buoyancy), to 1e-10 relative.
+ *  - A dt_f that is not couplingInterval x the DEM step is refused (tested in the shell cases). */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "coupling.h"
+#include "harness.h"
+
+static void write_case(const char *dir, const char *model)
+{
+    char path[512];
+    snprintf(path, sizeof path, "%s/constant", dir);
+    mkdir(dir, 0755);
+    mkdir(path, 0755);
+    snprintf(path, sizeof path, "%s/constant/demProperties", dir);
+    FILE *f = fopen(path, "w");
+    fprintf(f, "timeStep 2e-6; endTime 1; writeInterval 0; gravity (0 0 -9.81); maxExpectedVelocity 1;\n"
+               "domain { min (-0.01 -0.01 0); max (0.01 0.01 0.1); }\n"
+               "materials { s { youngsModulus 1e6; poissonsRatio 0.3; density 3000; } }\n"
+               "contactModels { normal hertz; tangential history; }\n"
+               "interactions { default { restitution 0.5; friction 0.5; } }\n"
+               "insertion { one { region { type box; min (-1e-4 -1e-4 0.0899); max (1e-4 1e-4 0.0901); }\n"
+               "  number 1; material s; diameter { distribution constant; value 1e-4; } } }\n");
+    fclose(f);
+    snprintf(path, sizeof path, "%s/constant/couplingProperties", dir);
+    f = fopen(path, "w");
+    fprintf(f, "couplingInterval 50; voidFraction { model centre; alphaMin 0.3; }\n"
+               "drag SchillerNaumann; momentumCoupling %s; exchange implicit; interpolation cell;\n", model);
+    fclose(f);
+}
+
+static void settle(const char *model)
+{
+    char dir[256];
+    snprintf(dir, sizeof dir, "/tmp/cpl_session_%s_%d", model, (int)getpid());
+    write_case(dir, model);
+    cpl_mesh m;
+    const double lo[3] = {-0.01, -0.01, 0.0}, hi[3] = {0.01, 0.01, 0.1};
+    cpl_mesh_box(&m, lo, hi, 4, 4, 20);
+    const int nc = m.ncells;
+    const double rho_f = 10.0, nu = 1e-5, g = 9.81;
+    coupling *c = coupling_create(dir, &m, rho_f, nu, 1e-4);
+    double (*U)[3] = calloc((size_t)nc, sizeof *U), (*gp)[3] = calloc((size_t)nc, sizeof *gp);
+    for (int k = 0; k < nc; k++) gp[k][2] = -rho_f * g;   /* hydrostatic: grad p = rho_f g */
+    double v[3], x[3], fluid_z = 0.0;
+    for (int step = 0; step < 1500; step++) {   /* 0.15 s: about 9 relaxation times */
+        coupling_evolve(c, (const double (*)[3])U, (const double (*)[3])gp);
+        const double *ksl = coupling_ksl(c), (*up)[3] = coupling_particle_velocity(c), (*S)[3] = coupling_explicit_source(c);
+        fluid_z = 0.0;   /* what the fluid receives, sum of V_c (K_sl (up - U) + S), z [N] */
+        for (int k = 0; k < nc; k++) fluid_z += (ksl[k] * (up[k][2] - U[k][2]) + S[k][2]) * 1.25e-7;
+    }
+    coupling_particle_means(c, v, x);
+    char what[96];
+    snprintf(what, sizeof what, "model %s: terminal velocity vs Schiller-Naumann", model);
+    check_rel(what, -v[2], 0.1373, 0.01);
+    /* At terminal velocity the fluid force on the sphere carries its weight. The fluid receives
+     * the reaction of the exchanged part: model B drag + buoyancy = m g; model A the drag only,
+     * (m - rho_f V) g (its buoyancy, -V grad p, is in the fluid equation's alpha grad p). */
+    const double vol = M_PI / 6.0 * 1e-12, mass = 3000.0 * vol;
+    const double expected = -(model[0] == 'B' ? mass : mass - rho_f * vol) * g;
+    snprintf(what, sizeof what, "model %s: force on the fluid at terminal velocity [N]", model);
+    check_rel(what, fluid_z, expected, 1e-3);
+    coupling_free(c);
+    free(U); free(gp);
+    char cmd[300];
+    snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
+    if (system(cmd) != 0) perror("rm");
+}
+
+int main(void)
+{
+    settle("B");
+    settle("A");
+    return finish("test_session");
+}
