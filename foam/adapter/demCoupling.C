@@ -1,0 +1,261 @@
+/*---------------------------------------------------------------------------*\
+    demCoupling: the OpenFOAM side of the C coupling layer (see demCoupling.H)
+\*---------------------------------------------------------------------------*/
+
+#include "demCoupling.H"
+#include "fvc.H"
+#include "Pstream.H"
+
+#include <cstdlib>
+#include <type_traits>
+
+#include "coupling.h"       // C API (extern "C"), coupling/src
+
+// The arrays go across without conversion: label must be a C int and a vector three packed doubles
+static_assert(sizeof(Foam::label) == sizeof(int), "label must be int32 (WM_LABEL_SIZE=32)");
+static_assert(std::is_same<Foam::scalar, double>::value, "scalar must be double (WM_PRECISION_OPTION=DP)");
+static_assert(sizeof(Foam::vector) == 3*sizeof(double), "vector must be three packed doubles");
+static_assert(sizeof(Foam::point) == 3*sizeof(double), "point must be three packed doubles");
+
+namespace
+{
+    // A vectorField as the C side's double (*)[3]
+    inline const double (*c3(const Foam::vectorField& f))[3]
+    {
+        return reinterpret_cast<const double (*)[3]>(f.cdata());
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::demCoupling::demCoupling
+(
+    const fvMesh& mesh,
+    scalar rho,
+    scalar nu,
+    scalar deltaT
+)
+:
+    mesh_(mesh),
+    rho_(rho),
+    session_(nullptr),
+    cmesh_(nullptr),
+    modelA_(false),
+    interval_(0),
+    adapterTime_(0),
+    clock_()
+{
+    if (Pstream::parRun())
+    {
+        FatalErrorInFunction
+            << "The DEM coupling runs in one process (the C layer holds the whole mesh and"
+            << " all particles); run without -parallel." << exit(FatalError);
+    }
+
+    // --- the mesh arrays, as OpenFOAM orders them (internal faces first)
+    const pointField& pts = mesh.points();
+    const faceList& faces = mesh.faces();
+    const labelList& own = mesh.faceOwner();
+    const labelList& nei = mesh.faceNeighbour();
+    const label nFaces = faces.size();
+
+    // faces as CSR
+    List<int> faceStart(nFaces + 1);
+    faceStart[0] = 0;
+    forAll(faces, facei)
+    {
+        faceStart[facei + 1] = faceStart[facei] + faces[facei].size();
+    }
+    List<int> facePoints(faceStart[nFaces]);
+    forAll(faces, facei)
+    {
+        const face& f = faces[facei];
+        int k = faceStart[facei];
+        forAll(f, i)
+        {
+            facePoints[k++] = f[i];
+        }
+    }
+
+    const vectorField& C = mesh.C().primitiveField();
+    const scalarField& V = mesh.V().field();
+
+    // The session takes the mesh over (and frees its arrays); the struct is made with C's
+    // allocator and kept until the session is freed.
+    cmesh_ = static_cast<cpl_mesh*>(std::calloc(1, sizeof(cpl_mesh)));
+    if (!cmesh_)
+    {
+        FatalErrorInFunction << "out of memory" << exit(FatalError);
+    }
+    cpl_mesh* m = cmesh_;
+
+    const int status = cpl_mesh_init
+    (
+        m,
+        pts.size(), c3(pts),
+        nFaces, faceStart.cdata(), facePoints.cdata(),
+        nei.size(), own.cdata(), nei.cdata(),
+        mesh.nCells(), c3(C), V.cdata()
+    );
+    if (status != 0)
+    {
+        FatalErrorInFunction
+            << "cpl_mesh_init failed for the mesh of " << mesh.time().path()
+            << " (message above)" << exit(FatalError);
+    }
+
+    Info<< "demCoupling: mesh copied to the coupling layer: " << pts.size() << " points, "
+        << nFaces << " faces (" << nei.size() << " internal), " << mesh.nCells()
+        << " cells" << nl;
+
+    const fileName caseDir(mesh.time().path());
+    session_ = coupling_create(caseDir.c_str(), m, rho, nu, deltaT);
+    if (!session_)
+    {
+        FatalErrorInFunction
+            << "coupling_create failed for case " << caseDir
+            << " (constant/demProperties, constant/couplingProperties)" << exit(FatalError);
+    }
+
+    modelA_ = (coupling_model_type(session_) == CPL_MODEL_A);
+    interval_ = coupling_interval(session_);
+
+    Info<< "demCoupling: " << nParticles() << " particles, model " << modelName()
+        << ", couplingInterval " << interval_ << " DEM steps per fluid step of "
+        << deltaT << " s" << nl << endl;
+}
+
+
+// * * * * * * * * * * * * * * * * Destructor  * * * * * * * * * * * * * * * //
+
+Foam::demCoupling::~demCoupling()
+{
+    if (session_)
+    {
+        coupling_free(session_);
+    }
+    std::free(cmesh_);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::label Foam::demCoupling::nParticles() const
+{
+    return coupling_particle_count(session_);
+}
+
+
+void Foam::demCoupling::evolve(const volVectorField& U, const volScalarField& p)
+{
+    clock_.timeIncrement();
+
+    // Pressure gradient in Pa/m: OpenFOAM's p is kinematic (p/rho_f)
+    const vectorField gradP(rho_*fvc::grad(p)().primitiveField());
+
+    adapterTime_ += clock_.timeIncrement();
+
+    coupling_evolve(session_, c3(U.primitiveField()), c3(gradP));
+
+    clock_.timeIncrement();
+}
+
+
+void Foam::demCoupling::update
+(
+    volScalarField& alpha,
+    volScalarField& Ksl,
+    volVectorField& Up,
+    volVectorField& fExplicit
+) const
+{
+    clock_.timeIncrement();
+
+    const label n = mesh_.nCells();
+
+    const double* a = coupling_alpha(session_);
+    const double* k = coupling_ksl(session_);
+    const double (*up)[3] = coupling_particle_velocity(session_);
+    const double (*f)[3] = coupling_explicit_source(session_);
+
+    if (!a || !k || !up || !f)
+    {
+        FatalErrorInFunction
+            << "the coupling layer returned no "
+            << (!a ? "alpha" : !k ? "Ksl" : !up ? "particle velocity" : "explicit source")
+            << " field" << exit(FatalError);
+    }
+
+    scalarField& alphaI = alpha.primitiveFieldRef();
+    scalarField& KslI = Ksl.primitiveFieldRef();
+    vectorField& UpI = Up.primitiveFieldRef();
+    vectorField& fI = fExplicit.primitiveFieldRef();
+
+    for (label i = 0; i < n; ++i)
+    {
+        alphaI[i] = a[i];
+        KslI[i] = k[i];
+        UpI[i] = vector(up[i][0], up[i][1], up[i][2]);
+        fI[i] = vector(f[i][0], f[i][1], f[i][2]);
+    }
+
+    alpha.correctBoundaryConditions();
+    Ksl.correctBoundaryConditions();
+    Up.correctBoundaryConditions();
+    fExplicit.correctBoundaryConditions();
+
+    adapterTime_ += clock_.timeIncrement();
+}
+
+
+bool Foam::demCoupling::initialAlpha(volScalarField& alpha) const
+{
+    const double* a = coupling_alpha(session_);
+    if (!a)
+    {
+        return false;
+    }
+    const label n = mesh_.nCells();
+    for (label i = 0; i < n; ++i)
+    {
+        if (!(a[i] > 0))
+        {
+            return false;
+        }
+    }
+    scalarField& alphaI = alpha.primitiveFieldRef();
+    for (label i = 0; i < n; ++i)
+    {
+        alphaI[i] = a[i];
+    }
+    alpha.correctBoundaryConditions();
+    return true;
+}
+
+
+void Foam::demCoupling::write(scalar time)
+{
+    coupling_write(session_, time);
+}
+
+
+void Foam::demCoupling::particleMeans(vector& v, vector& x) const
+{
+    double vv[3], xx[3];
+    coupling_particle_means(session_, vv, xx);
+    v = vector(vv[0], vv[1], vv[2]);
+    x = vector(xx[0], xx[1], xx[2]);
+}
+
+
+void Foam::demCoupling::timings(scalar& demTime, scalar& couplingTime) const
+{
+    double dem = 0, cpl = 0;
+    coupling_timings(session_, &dem, &cpl);
+    demTime = dem;
+    couplingTime = cpl + adapterTime_;
+}
+
+
+// ************************************************************************* //

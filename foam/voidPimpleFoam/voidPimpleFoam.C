@@ -1,0 +1,227 @@
+/*---------------------------------------------------------------------------*\
+Application
+    voidPimpleFoam
+
+Description
+    Transient solver for the volume-averaged incompressible flow of a Newtonian fluid through
+    DEM particles (CFD-DEM, unresolved): void-fraction-weighted continuity and momentum,
+    PIMPLE, laminar. The particles (dem/), the void fraction, the exchange coefficient and the
+    particle sources come from the C coupling layer (coupling/src/coupling.h) through the
+    demCoupling adapter (foam/adapter).
+
+    Equations (per unit volume of mixture, divided by rho_f; alpha = fluid volume fraction,
+    U = interstitial fluid velocity, phi = interstitial face flux, p = KINEMATIC pressure
+    p_real/rho_f including the hydrostatic part, g = gravity):
+
+    continuity
+        ddt(alpha) + div(alpha U) = 0
+      solved as the pressure equation (CFDEM/DPMFoam style, alpha changes with the particles):
+        laplacian(alpha_f c_f rAU_f, p) = ddt(alpha) + div(alpha_f phiHbyA)
+      with c = 1 (model B) or alpha (model A).
+
+    momentum
+        ddt(alpha U) + div(alpha phi, U) - [ddt(alpha) + div(alpha phi)] U
+      - div(alpha nu (grad(U) + dev2(T(grad(U)))))
+      = - c grad(p)                         c = 1 (model B, default) or alpha (model A)
+        + alpha g                           gravity as a body force on the fluid
+        + Ksl/rho_f (Up - U)                drag, implicit: fvm::Sp(Ksl/rho_f, U) on the left,
+                                            Ksl/rho_f Up as a source
+        + fExplicit/rho_f                   other particle forces on the fluid
+      The bracket subtracts the continuity residual (zero when the pressure equation is
+      converged), as DPMFoam and CFDEM do; it keeps U bounded while alpha changes.
+      The explicit sources (Ksl Up + fExplicit)/rho_f and alpha g enter as face fluxes
+      (phiForces, as DPMFoam's phicForces), so that pressure and body forces balance face by
+      face and a fluid at rest stays at rest (with fixedFluxPressure on walls).
+
+    Since p keeps its hydrostatic part, the C side gets the full gradient
+    rho_f fvc::grad(p) [Pa/m] and computes the particles' pressure-gradient (buoyancy) force
+    from it. With alpha = 1 and Ksl = 0 the equations are pimpleFoam's (laminar).
+
+    One fluid time step (deltaT of system/controlDict, fixed: adjustTimeStep is refused):
+      1. coupling: couplingInterval DEM steps with the drag of the current U and grad(p),
+         then alpha, Ksl, Up, fExplicit of the new particle state (alpha's old value is kept
+         for ddt(alpha));
+      2. fluid: the PIMPLE loop;
+      3. write times: alpha, U, p, phi, Ksl, Up, fExplicit and particleSource
+         (= Ksl (Up - U) + fExplicit [N/m^3], the particles' force density on the fluid)
+         as OpenFOAM fields; particles to <case>/particles.h5 + particles.xdmf (also at the
+         start time).
+
+    Input
+      constant/transportProperties   transportModel Newtonian; nu [0 2 -1 0 0 0 0] 1e-6;
+                                     rho [1 -3 0 0 0 0 0] 1000;   (rho_f for the coupling)
+      constant/g                     optional; otherwise gravity of constant/demProperties
+                                     (if both are given they must agree)
+      constant/demProperties         the DEM (as for demRun)         } read by the C side
+      constant/couplingProperties    couplingInterval, void fraction } (errors name file
+                                     model, drag law, model A/B, ... } and key)
+      0/U, 0/p                       p: fixedFluxPressure on walls when gravity is on
+      system/fvSchemes               also div(alphaPhi,U), laplacian(alphaNu,U),
+                                     div(((alpha*nuEff)*dev2(T(grad(U))))) (the name DPMFoam uses)
+      system/fvSolution              PIMPLE { nOuterCorrectors; nCorrectors;
+                                     nNonOrthogonalCorrectors; pRefCell; pRefValue; }
+
+    Serial only (the C layer holds the whole mesh and all particles).
+
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include "singlePhaseTransportModel.H"
+#include "pimpleControl.H"
+#include "fvOptions.H"
+#include "uniformDimensionedFields.H"
+#include "IFstream.H"
+#include "clockTime.H"
+
+#include "demCoupling.H"
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Transient solver for the volume-averaged incompressible flow of a"
+        " Newtonian fluid with DEM particles (void fraction, implicit drag),"
+        " coupled to the project's C DEM through libcoupling."
+    );
+
+    #include "postProcess.H"
+
+    #include "addCheckCaseOptions.H"
+    #include "setRootCaseLists.H"
+
+    const clockTime wallClock;     // the run's wall time, for the time split at the end
+
+    #include "createTime.H"
+    #include "createMesh.H"
+    #include "createControl.H"
+    #include "createFields.H"
+    #include "initContinuityErrs.H"
+
+    // --- the coupling session: copies the mesh, reads demProperties and couplingProperties
+    demCoupling coupling(mesh, rhoFluid.value(), nuFluid, runTime.deltaTValue());
+
+    const bool modelA = coupling.modelA();
+    // c of the pressure term at the faces: alpha_f (model A) or 1 (model B)
+    surfaceScalarField pCoeff_f("pCoeff_f", alphaf);
+
+    // The initial void fraction, if the C side has one before the first step
+    const bool haveInitialAlpha = coupling.initialAlpha(alpha);
+    if (!haveInitialAlpha)
+    {
+        Info<< "The coupling layer gives no initial void fraction: alpha starts at 1 and"
+            << " the first step takes ddt(alpha) = 0" << nl << endl;
+    }
+    alphaf = fvc::interpolate(alpha);
+    alphaPhi = alphaf*phi;
+
+    // The particles' initial state opens the HDF5/XDMF series
+    coupling.write(runTime.value());
+
+    #include "CourantNo.H"
+
+    Info<< "\nStarting time loop\n" << endl;
+
+    clockTime clock;
+    scalar fluidTime = 0;
+    label stepi = 0;
+
+    while (runTime.run())
+    {
+        #include "CourantNo.H"
+
+        ++runTime;
+        ++stepi;
+
+        Info<< "Time = " << runTime.timeName() << nl << endl;
+
+        // --- 1. DEM steps and coupling: alpha, Ksl, Up, fExplicit at the new time
+        clock.timeIncrement();
+
+        coupling.evolve(U, p);
+        coupling.update(alpha, Ksl, Up, fExplicit);
+        if (stepi == 1 && !haveInitialAlpha)
+        {
+            alpha.oldTime() == alpha;
+        }
+        alphaf = fvc::interpolate(alpha);
+        alphaPhi = alphaf*phi;
+
+        if (modelA)
+        {
+            pCoeff_f = alphaf;
+        }
+        else
+        {
+            pCoeff_f = dimensionedScalar("one", dimless, 1.0);
+        }
+
+        clock.timeIncrement();     // (the coupling's time is measured by the C side)
+
+        // --- 2. Pressure-velocity PIMPLE corrector loop
+        while (pimple.loop())
+        {
+            #include "UEqn.H"
+
+            // --- Pressure corrector loop
+            while (pimple.correct())
+            {
+                #include "pEqn.H"
+            }
+
+            if (pimple.turbCorr())
+            {
+                laminarTransport.correct();
+            }
+        }
+
+        particleSource = Ksl*(Up - U) + fExplicit;
+
+        fluidTime += clock.timeIncrement();
+
+        // --- 3. output
+        if (runTime.writeTime())
+        {
+            coupling.write(runTime.value());
+        }
+        runTime.write();
+
+        {
+            vector vp, xp;
+            coupling.particleMeans(vp, xp);
+            scalar demT, cplT;
+            coupling.timings(demT, cplT);
+            Info<< "Particles: " << coupling.nParticles()
+                << ", mean velocity " << vp << " m/s, mean position " << xp << " m" << nl
+                << "alpha: min " << gMin(alpha.primitiveField())
+                << ", mean " << alpha.weightedAverage(mesh.V()).value()
+                << "; particle force on the fluid: " << fvc::domainIntegrate(particleSource).value()
+                << " N" << nl
+                << "Wall time so far: DEM " << demT << " s, coupling " << cplT
+                << " s, fluid " << fluidTime << " s" << nl;
+        }
+
+        runTime.printExecutionTime(Info);
+    }
+
+    {
+        scalar demT, cplT;
+        coupling.timings(demT, cplT);
+        const scalar total = max(wallClock.elapsedTime(), SMALL);
+        Info<< nl << "Time split over " << stepi << " fluid steps ("
+            << stepi*coupling.interval() << " DEM steps):" << nl
+            << "    DEM       " << demT << " s (" << 100*demT/total << " %)" << nl
+            << "    coupling  " << cplT << " s (" << 100*cplT/total << " %)" << nl
+            << "    fluid     " << fluidTime << " s (" << 100*fluidTime/total << " %)" << nl
+            << "    total     " << total << " s (wall, including start-up and output)" << nl
+            << endl;
+    }
+
+    Info<< "End\n" << endl;
+
+    return 0;
+}
+
+
+// ************************************************************************* //
