@@ -1,0 +1,39 @@
+#!/bin/bash
+# Bad coupled-case input must stop voidPimpleFoam with exit status 1 and a message naming the
+# file, line and key; never a crash. Runs on a copy of tutorials/settling.
+# Usage: check_coupling_errors.sh <voidPimpleFoam> <settling case dir>
+solver=$1 base=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+export WM_PROJECT_DIR=${OF_DEV_DIR:-/opt/of/OpenFOAM-v1912}
+passed=0 failed=0
+# name | file | sed expression | text the error must contain (grep -E)
+cases=(
+  "interval_mismatch|constant/couplingProperties|s/^couplingInterval 50;/couplingInterval 40;/|couplingProperties:[0-9]+: error: key 'couplingInterval'.*deltaT"
+  "unknown_drag|constant/couplingProperties|s/^drag        SchillerNaumann;/drag Ergun;/|couplingProperties:[0-9]+: error: key 'drag'.*SchillerNaumann"
+  "alpha_min_range|constant/couplingProperties|s/alphaMin  0.3;/alphaMin  2;/|couplingProperties:[0-9]+: error: key 'alphaMin'.*range"
+  "unknown_model|constant/couplingProperties|s/^momentumCoupling B;/momentumCoupling C;/|couplingProperties:[0-9]+: error: key 'momentumCoupling'"
+  "typo_key|constant/couplingProperties|s/^exchange    implicit;/exchnage implicit;/|couplingProperties:[0-9]+: error: unknown key 'exchnage'.*exchange"
+  "dem_error|constant/demProperties|s/density 3000;/density -3000;/|demProperties:[0-9]+: error: key 'density'"
+)
+mkdir -p "$work/mesh"
+cp -r "$base/0" "$base/constant" "$base/system" "$work/mesh/"
+rm -rf "$work/mesh/constant/polyMesh"
+blockMesh -case "$work/mesh" > "$work/blockMesh.log" 2>&1 || { echo "blockMesh failed"; cat "$work/blockMesh.log"; exit 1; }
+for c in "${cases[@]}"; do
+    IFS='|' read -r name file expr expect <<< "$c"
+    cp -r "$work/mesh" "$work/$name"
+    sed -i -e "$expr" "$work/$name/$file"
+    "$solver" -case "$work/$name" > "$work/$name.log" 2>&1
+    status=$?
+    if [ $status -eq 1 ] && grep -qE "$expect" "$work/$name.log"; then
+        echo "PASS $name: $(grep -m1 -oE "[a-zA-Z]+Properties:[0-9]+: error: .{0,100}" "$work/$name.log")"
+        passed=$((passed + 1))
+    else
+        echo "FAIL $name: exit status $status, expected 1 and a message matching: $expect"
+        grep -iE "error" "$work/$name.log" | head -5 | sed 's/^/    /'
+        failed=$((failed + 1))
+    fi
+done
+echo "coupled bad input: $passed passed, $failed failed"
+[ $failed -eq 0 ]
