@@ -87,10 +87,16 @@ static void read_coupling_properties(coupling *c, double dt_f, double *alpha_min
     c->params.model = (enum cpl_model_type)dict_choice(d, "momentumCoupling", cpl_model_type_names);
     c->params.exchange = (enum cpl_exchange_mode)dict_choice_opt(d, "exchange", cpl_exchange_mode_names,
                                                                  CPL_EXCHANGE_IMPLICIT);
-    static const char *const interp_names[] = {"cell", "cellLinear", 0};
-    c->interp_scheme = dict_choice_opt(d, "interpolation", interp_names, 0) ? CPL_INTERP_LINEAR : CPL_INTERP_CELL;
+    static const char *const interp_names[] = {"cell", "cellLinear", "cellPoint", 0};
+    static const enum cpl_interp_scheme schemes[] = {CPL_INTERP_CELL, CPL_INTERP_LINEAR, CPL_INTERP_CELL_POINT};
+    c->interp_scheme = schemes[dict_choice_opt(d, "interpolation", interp_names, 0)];
     dict_check_unused(d);
     dict_free(d);
+}
+
+static const char *interp_names_of(enum cpl_interp_scheme s)
+{
+    return s == CPL_INTERP_CELL ? "cell" : s == CPL_INTERP_LINEAR ? "cellLinear" : "cellPoint";
 }
 
 static void grow_particles(coupling *c, int n)
@@ -222,9 +228,9 @@ coupling *coupling_create(const char *case_dir, cpl_mesh *mesh, double rho_f, do
     if (cpl_force_params_check(&c->params) != 0) dem_fatal("coupling: bad fluid parameters (see above)");
     if (cpl_vf_init(&c->vf, &c->mesh, vf_model, alpha_min) != 0) dem_fatal("coupling: void fraction setup failed");
     if (vf_model == CPL_VF_GAUSSIAN) { c->vf.kernel_width = kernel_width; c->vf.kernel_cutoff = kernel_cutoff; }
-    if (c->interp_scheme == CPL_INTERP_LINEAR &&
-        (cpl_interp_init(&c->interp_u, &c->mesh, CPL_INTERP_LINEAR, 3) != 0 ||
-         cpl_interp_init(&c->interp_gp, &c->mesh, CPL_INTERP_LINEAR, 3) != 0))
+    if (c->interp_scheme != CPL_INTERP_CELL &&
+        (cpl_interp_init(&c->interp_u, &c->mesh, c->interp_scheme, 3) != 0 ||
+         cpl_interp_init(&c->interp_gp, &c->mesh, c->interp_scheme, 3) != 0))
         dem_fatal("coupling: interpolation setup failed");
     cpl_fluid_forces_init(&c->forces);
 
@@ -251,7 +257,7 @@ coupling *coupling_create(const char *case_dir, cpl_mesh *mesh, double rho_f, do
            "(alphaMin %g), drag %s, model %s, %s exchange, %s interpolation\n",
            c->s.p.n, nc, c->interval, c->s.dt, vf_model == CPL_VF_CENTRE ? "centre" : vf_model == CPL_VF_DIVIDED ? "divided" : "gaussian",
            alpha_min, cpl_drag_law_names[c->params.drag], cpl_model_type_names[c->params.model],
-           cpl_exchange_mode_names[c->params.exchange], c->interp_scheme == CPL_INTERP_CELL ? "cell" : "cellLinear");
+           cpl_exchange_mode_names[c->params.exchange], interp_names_of(c->interp_scheme));
     return c;
 }
 
@@ -313,7 +319,7 @@ void coupling_free(coupling *c)
     io_close_writer(c->writer);
     if (c->means) fclose(c->means);
     cpl_fluid_forces_free(&c->forces);
-    if (c->interp_scheme == CPL_INTERP_LINEAR) { cpl_interp_free(&c->interp_u); cpl_interp_free(&c->interp_gp); }
+    if (c->interp_scheme != CPL_INTERP_CELL) { cpl_interp_free(&c->interp_u); cpl_interp_free(&c->interp_gp); }
     cpl_vf_free(&c->vf);
     cpl_mesh_free(&c->mesh);
     system_free(&c->s);

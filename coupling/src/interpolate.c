@@ -1,5 +1,5 @@
-/* Cell-centred fields at particle positions: cell value, or least-squares linear reconstruction
- * from the cell and its face neighbours. See interpolate.h. */
+/* Cell-centred fields at particle positions: cell value, least-squares linear reconstruction
+ * from the cell and its face neighbours, or cell-point (tetrahedra). See interpolate.h. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -11,8 +11,9 @@ int cpl_interp_scheme_parse(const char *name, enum cpl_interp_scheme *scheme)
 {
     if (!strcmp(name, "cell")) *scheme = CPL_INTERP_CELL;
     else if (!strcmp(name, "cellLinear")) *scheme = CPL_INTERP_LINEAR;
+    else if (!strcmp(name, "cellPoint")) *scheme = CPL_INTERP_CELL_POINT;
     else {
-        fprintf(stderr, "interpolation '%s' unknown: use cell or cellLinear\n", name);
+        fprintf(stderr, "interpolation '%s' unknown: use cell, cellLinear or cellPoint\n", name);
         return -1;
     }
     return 0;
@@ -21,6 +22,7 @@ int cpl_interp_scheme_parse(const char *name, enum cpl_interp_scheme *scheme)
 void cpl_interp_free(cpl_interp *ip)
 {
     free(ip->minv); free(ip->field); free(ip->grad);
+    free(ip->pc_start); free(ip->pc_cell); free(ip->pc_w); free(ip->point_value);
     memset(ip, 0, sizeof *ip);
 }
 
@@ -59,6 +61,104 @@ static void lsq_inverse(const cpl_mesh *m, int c, double inv[9])
     for (int i = 0; i < 9; i++) inv[i] /= det;
 }
 
+/* cellPoint: the cells around each point (through the faces of each cell) and their
+ * inverse-distance weights. */
+static int point_cells(cpl_interp *ip, const cpl_mesh *m, int ncomp)
+{
+    const int np = m->npoints;
+    int *count = calloc((size_t)np + 1, sizeof(int));
+    int *last = malloc((size_t)(np ? np : 1) * sizeof(int));
+    if (!count || !last) { free(count); free(last); fprintf(stderr, "interpolation: out of memory\n"); return -1; }
+    for (int pass = 0; pass < 2; pass++) {
+        for (int q = 0; q < np; q++) last[q] = -1;
+        for (int c = 0; c < m->ncells; c++)
+            for (int k = m->cell_face_start[c]; k < m->cell_face_start[c + 1]; k++) {
+                const int f = m->cell_faces[k];
+                for (int e = m->face_start[f]; e < m->face_start[f + 1]; e++) {
+                    const int q = m->face_points[e];
+                    if (last[q] == c) continue;   /* a point is on several faces of the cell */
+                    last[q] = c;
+                    if (pass == 0) count[q + 1]++;
+                    else ip->pc_cell[count[q]++] = c;
+                }
+            }
+        if (pass == 0) {
+            for (int q = 0; q < np; q++) count[q + 1] += count[q];
+            ip->pc_start = malloc(((size_t)np + 1) * sizeof(int));
+            ip->pc_cell = malloc((size_t)(count[np] ? count[np] : 1) * sizeof(int));
+            ip->pc_w = malloc((size_t)(count[np] ? count[np] : 1) * sizeof(double));
+            ip->point_value = calloc((size_t)(np ? np : 1) * ncomp, sizeof(double));
+            if (!ip->pc_start || !ip->pc_cell || !ip->pc_w || !ip->point_value) {
+                free(count); free(last); fprintf(stderr, "interpolation: out of memory\n"); return -1;
+            }
+            memcpy(ip->pc_start, count, ((size_t)np + 1) * sizeof(int));
+        }
+    }
+    free(count); free(last);
+    for (int q = 0; q < np; q++) {
+        double sum = 0.0;
+        for (int k = ip->pc_start[q]; k < ip->pc_start[q + 1]; k++) {
+            const double *xc = m->cell_centre[ip->pc_cell[k]], *xp = m->points[q];
+            const double d = sqrt((xc[0] - xp[0]) * (xc[0] - xp[0]) + (xc[1] - xp[1]) * (xc[1] - xp[1]) +
+                                  (xc[2] - xp[2]) * (xc[2] - xp[2]));
+            ip->pc_w[k] = 1.0 / d;
+            sum += ip->pc_w[k];
+        }
+        for (int k = ip->pc_start[q]; k < ip->pc_start[q + 1]; k++) ip->pc_w[k] /= sum;
+    }
+    return 0;
+}
+
+/* Barycentric coordinates of x in the tetrahedron (a, b, c, d); returns the smallest. */
+static double barycentric(const double *a, const double *b, const double *c, const double *d,
+                          const double x[3], double l[4])
+{
+    double e1[3], e2[3], e3[3], r[3];
+    for (int i = 0; i < 3; i++) { e1[i] = b[i] - a[i]; e2[i] = c[i] - a[i]; e3[i] = d[i] - a[i]; r[i] = x[i] - a[i]; }
+    const double det = e1[0] * (e2[1] * e3[2] - e2[2] * e3[1]) - e1[1] * (e2[0] * e3[2] - e2[2] * e3[0]) +
+                       e1[2] * (e2[0] * e3[1] - e2[1] * e3[0]);
+    if (!(fabs(det) > 0)) { l[0] = 1; l[1] = l[2] = l[3] = 0; return -INFINITY; }
+    /* Cramer's rule for r = l1 e1 + l2 e2 + l3 e3 */
+    l[1] = (r[0] * (e2[1] * e3[2] - e2[2] * e3[1]) - r[1] * (e2[0] * e3[2] - e2[2] * e3[0]) +
+            r[2] * (e2[0] * e3[1] - e2[1] * e3[0])) / det;
+    l[2] = (e1[0] * (r[1] * e3[2] - r[2] * e3[1]) - e1[1] * (r[0] * e3[2] - r[2] * e3[0]) +
+            e1[2] * (r[0] * e3[1] - r[1] * e3[0])) / det;
+    l[3] = (e1[0] * (e2[1] * r[2] - e2[2] * r[1]) - e1[1] * (e2[0] * r[2] - e2[2] * r[0]) +
+            e1[2] * (e2[0] * r[1] - e2[1] * r[0])) / det;
+    l[0] = 1.0 - l[1] - l[2] - l[3];
+    return fmin(fmin(l[0], l[1]), fmin(l[2], l[3]));
+}
+
+/* cellPoint at x in cell c: the tetrahedron holding x (or, if rounding puts x outside all of
+ * them, the one it is least outside of). */
+static void cell_point_at(const cpl_interp *ip, const cpl_mesh *m, int c, const double x[3], double *out)
+{
+    const int nc = ip->ncomp;
+    double best = -INFINITY, lb[4] = {1, 0, 0, 0};
+    int bf = -1, bp = -1;
+    for (int k = m->cell_face_start[c]; k < m->cell_face_start[c + 1] && best < 0.0; k++) {
+        const int f = m->cell_faces[k], s = m->face_start[f], n = m->face_start[f + 1] - s;
+        for (int e = 0; e < n; e++) {
+            double l[4];
+            const double lo = barycentric(m->cell_centre[c], m->face_centre[f], m->points[m->face_points[s + e]],
+                                          m->points[m->face_points[s + (e + 1) % n]], x, l);
+            if (lo > best) { best = lo; bf = f; bp = e; memcpy(lb, l, sizeof lb); }
+            if (lo >= 0.0) break;
+        }
+    }
+    const double *u = ip->field + (size_t)c * nc;
+    if (bf < 0) { for (int j = 0; j < nc; j++) out[j] = u[j]; return; }
+    const int s = m->face_start[bf], n = m->face_start[bf + 1] - s;
+    const int pa = m->face_points[s + bp], pb = m->face_points[s + (bp + 1) % n];
+    for (int j = 0; j < nc; j++) {
+        double uf = 0.0;   /* face centre: the mean of its points */
+        for (int e = 0; e < n; e++) uf += ip->point_value[(size_t)m->face_points[s + e] * nc + j];
+        uf /= n;
+        out[j] = lb[0] * u[j] + lb[1] * uf + lb[2] * ip->point_value[(size_t)pa * nc + j] +
+                 lb[3] * ip->point_value[(size_t)pb * nc + j];
+    }
+}
+
 int cpl_interp_init(cpl_interp *ip, const cpl_mesh *m, enum cpl_interp_scheme scheme, int ncomp)
 {
     memset(ip, 0, sizeof *ip);
@@ -66,7 +166,7 @@ int cpl_interp_init(cpl_interp *ip, const cpl_mesh *m, enum cpl_interp_scheme sc
         fprintf(stderr, "interpolation: %d components per cell (1 .. 64)\n", ncomp);
         return -1;
     }
-    if (scheme != CPL_INTERP_CELL && scheme != CPL_INTERP_LINEAR) {
+    if (scheme != CPL_INTERP_CELL && scheme != CPL_INTERP_LINEAR && scheme != CPL_INTERP_CELL_POINT) {
         fprintf(stderr, "interpolation: unknown scheme %d\n", (int)scheme);
         return -1;
     }
@@ -85,6 +185,10 @@ int cpl_interp_init(cpl_interp *ip, const cpl_mesh *m, enum cpl_interp_scheme sc
     }
     if (scheme == CPL_INTERP_LINEAR)
         for (int c = 0; c < m->ncells; c++) lsq_inverse(m, c, ip->minv[c]);
+    if (scheme == CPL_INTERP_CELL_POINT && point_cells(ip, m, ncomp) != 0) {
+        cpl_interp_free(ip);
+        return -1;
+    }
     return 0;
 }
 
@@ -92,6 +196,16 @@ void cpl_interp_set_field(cpl_interp *ip, const cpl_mesh *m, const double *field
 {
     const int nc = ip->ncomp;
     memcpy(ip->field, field, (size_t)ip->ncells * nc * sizeof(double));
+    if (ip->scheme == CPL_INTERP_CELL_POINT) {
+        for (int q = 0; q < m->npoints; q++)
+            for (int j = 0; j < nc; j++) {
+                double v = 0.0;
+                for (int k = ip->pc_start[q]; k < ip->pc_start[q + 1]; k++)
+                    v += ip->pc_w[k] * field[(size_t)ip->pc_cell[k] * nc + j];
+                ip->point_value[(size_t)q * nc + j] = v;
+            }
+        return;
+    }
     if (ip->scheme != CPL_INTERP_LINEAR) return;
     for (int c = 0; c < ip->ncells; c++) {
         double b[64][3];
@@ -125,6 +239,10 @@ int cpl_interp_at(const cpl_interp *ip, const cpl_mesh *m, int cell, const doubl
     const double *u = ip->field + (size_t)cell * nc;
     if (ip->scheme == CPL_INTERP_CELL) {
         for (int j = 0; j < nc; j++) out[j] = u[j];
+        return 0;
+    }
+    if (ip->scheme == CPL_INTERP_CELL_POINT) {
+        cell_point_at(ip, m, cell, x, out);
         return 0;
     }
     const double *xc = m->cell_centre[cell], *g = ip->grad + (size_t)cell * nc * 3;

@@ -9,6 +9,14 @@
  *               3D, boundary cells included. This is NOT OpenFOAM's cellPoint (tetrahedra with
  *               inverse-distance point values): it is linear-exact on any mesh but not continuous
  *               across faces, and not bounded (no limiter).
+ *   cellPoint   as OpenFOAM's interpolationCellPoint: point values are the inverse-distance
+ *               average of the cells around each point; the cell is split into tetrahedra
+ *               (cell centre, face centre, two consecutive face points; the face centre's value
+ *               is the mean of its points') and the value is linear (barycentric) in the
+ *               tetrahedron holding x. Continuous across faces; linear-exact where the point
+ *               averages are (interior points of uniform meshes). Boundary points average only
+ *               the cells there (OpenFOAM uses the boundary values), so it is not linear-exact
+ *               next to walls.
  * A direction the neighbours do not span (one cell thick meshes) gets a zero gradient. */
 #ifndef CPL_INTERPOLATE_H
 #define CPL_INTERPOLATE_H
@@ -19,7 +27,7 @@
 extern "C" {
 #endif
 
-enum cpl_interp_scheme { CPL_INTERP_CELL, CPL_INTERP_LINEAR };
+enum cpl_interp_scheme { CPL_INTERP_CELL, CPL_INTERP_LINEAR, CPL_INTERP_CELL_POINT };
 
 typedef struct cpl_interp {
     enum cpl_interp_scheme scheme;
@@ -27,9 +35,12 @@ typedef struct cpl_interp {
     double (*minv)[9];          /* cellLinear: inverse least-squares matrix of cell c [m^2] */
     double *field;              /* [ncells][ncomp] copy of the last field */
     double *grad;               /* [ncells][ncomp][3] its reconstructed gradient [field/m] */
+    int *pc_start, *pc_cell;    /* cellPoint: CSR point -> cells */
+    double *pc_w;               /* cellPoint: inverse-distance weights, summing to 1 per point */
+    double *point_value;        /* cellPoint: [npoints][ncomp] */
 } cpl_interp;
 
-/* name: "cell" or "cellLinear". Returns 0, or -1 with a message on stderr. */
+/* name: "cell", "cellLinear" or "cellPoint". Returns 0, or -1 with a message on stderr. */
 int cpl_interp_scheme_parse(const char *name, enum cpl_interp_scheme *scheme);
 
 /* For fields of ncomp components per cell on mesh m. Returns 0, or -1 with a message. */
