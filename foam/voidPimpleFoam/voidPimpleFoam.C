@@ -33,6 +33,15 @@ Description
       (phiForces, as DPMFoam's phicForces), so that pressure and body forces balance face by
       face and a fluid at rest stays at rest (with fixedFluxPressure on walls).
 
+    faceMomentum (optional, PIMPLE { faceMomentum true; }, default false): the implicit drag
+      acts at the faces, Kf phi with Kf = alpha_f interpolate(Ksl/(rho_f alpha)) (the resistance
+      per unit superficial velocity, interpolated), so the face flux is
+        phi = [phiHbyA' + rAU_f phiForces' - c rAU_f snGrad(p) |S_f|] / (1 + rAU_f Kf)
+      with rAU of the momentum matrix without the drag, and the cell velocity is reconstructed
+      from the superficial fluxes, U = reconstruct(alpha_f phi)/alpha. This keeps the drag of
+      the cells at a bed's ends (packed cell next to free fluid) and removes the odd-even
+      velocity pattern that the cell-centred drag leaves in the free fluid next to a bed.
+
     Since p keeps its hydrostatic part, the C side gets the full gradient
     rho_f fvc::grad(p) [Pa/m] and computes the particles' pressure-gradient (buoyancy) force
     from it. With alpha = 1 and Ksl = 0 the equations are pimpleFoam's (laminar).
