@@ -33,7 +33,7 @@ Description
       (phiForces, as DPMFoam's phicForces), so that pressure and body forces balance face by
       face and a fluid at rest stays at rest (with fixedFluxPressure on walls).
 
-    faceMomentum (optional, PIMPLE { faceMomentum true; }, default false): the implicit drag
+    faceMomentum (optional, PIMPLE { faceMomentum false; } to switch off; default true): the implicit drag
       acts at the faces, Kf phi with Kf = alpha_f interpolate(Ksl/(rho_f alpha)) (the resistance
       per unit superficial velocity, interpolated), so the face flux is
         phi = [phiHbyA' + rAU_f phiForces' - c rAU_f snGrad(p) |S_f|] / (1 + rAU_f Kf)
