@@ -26,6 +26,17 @@ void cpl_interp_free(cpl_interp *ip)
     memset(ip, 0, sizeof *ip);
 }
 
+/* The neighbour across the k-th face of cell c (-1 on a boundary), the offset d between the
+ * centres and the least-squares weight 1/|d|^2. */
+static int lsq_neighbour(const cpl_mesh *m, int c, int k, double d[3], double *w)
+{
+    const int n = cpl_mesh_other_cell(m, m->cell_faces[k], c);
+    if (n < 0) return -1;
+    for (int i = 0; i < 3; i++) d[i] = m->cell_centre[n][i] - m->cell_centre[c][i];
+    *w = 1.0 / (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    return n;
+}
+
 /* Inverse of the symmetric matrix sum w d d^T of cell c. A small multiple of the trace is added
  * to the diagonal: negligible (1e-12 relative) when the neighbours span 3D, and it makes an
  * unspanned direction's gradient 0 instead of a division by zero (its right-hand side is 0). */
@@ -33,11 +44,8 @@ static void lsq_inverse(const cpl_mesh *m, int c, double inv[9])
 {
     double a[9] = {0};
     for (int k = m->cell_face_start[c]; k < m->cell_face_start[c + 1]; k++) {
-        const int n = cpl_mesh_other_cell(m, m->cell_faces[k], c);
-        if (n < 0) continue;
-        double d[3];
-        for (int i = 0; i < 3; i++) d[i] = m->cell_centre[n][i] - m->cell_centre[c][i];
-        const double w = 1.0 / (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+        double d[3], w;
+        if (lsq_neighbour(m, c, k, d, &w) < 0) continue;
         for (int i = 0; i < 3; i++)
             for (int j = 0; j < 3; j++) a[3 * i + j] += w * d[i] * d[j];
     }
@@ -211,11 +219,9 @@ void cpl_interp_set_field(cpl_interp *ip, const cpl_mesh *m, const double *field
         double b[64][3];
         memset(b, 0, (size_t)nc * sizeof b[0]);
         for (int k = m->cell_face_start[c]; k < m->cell_face_start[c + 1]; k++) {
-            const int n = cpl_mesh_other_cell(m, m->cell_faces[k], c);
+            double d[3], w;
+            const int n = lsq_neighbour(m, c, k, d, &w);
             if (n < 0) continue;
-            double d[3];
-            for (int i = 0; i < 3; i++) d[i] = m->cell_centre[n][i] - m->cell_centre[c][i];
-            const double w = 1.0 / (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
             for (int j = 0; j < nc; j++) {
                 const double du = w * (field[(size_t)n * nc + j] - field[(size_t)c * nc + j]);
                 for (int i = 0; i < 3; i++) b[j][i] += du * d[i];
