@@ -6,6 +6,7 @@
 #include <stdlib.h>
 
 #include "harness.h"
+#include "test_meshes.h"
 #include "interpolate.h"
 #include "mesh.h"
 #include "rng.h"
@@ -90,24 +91,6 @@ static void smooth_error(int n, double *err_linear, double *err_cell)
     cpl_interp_free(&lin);
     cpl_interp_free(&cel);
     cpl_mesh_free(&m);
-}
-
-static void shear_grade(double x[3], void *ctx)
-{
-    (void)ctx;
-    x[0] = x[0] * x[0];
-    x[2] = 2.0 * (x[2] + 0.5 * x[2] * x[2]);
-    x[0] += 0.1 * sin(2.0 * x[2]);
-    x[1] += 0.3 * x[0];
-    x[0] += 0.3 * x[2];
-}
-
-static void shear_linear(double x[3], void *ctx)
-{
-    (void)ctx;
-    x[1] = x[1] * (1.0 + 0.5 * x[1]);
-    x[0] += 0.3 * x[2];
-    x[1] += 0.2 * x[0];
 }
 
 /* cellPoint on a uniform 6^3 box: a linear field is exact in cells away from the boundary

@@ -5,6 +5,7 @@
 #include <stdlib.h>
 
 #include "harness.h"
+#include "test_meshes.h"
 #include "mesh.h"
 #include "rng.h"
 
@@ -96,26 +97,6 @@ static int locate_agrees(const cpl_mesh *m, int npts, unsigned seed, int *outsid
     }
     free(hits);
     return bad;
-}
-
-static void shear_grade(double x[3], void *ctx)
-{
-    (void)ctx;
-    /* per-axis stretch (grading), a non-linear shear of x along z, then a linear shear: every
-     * face stays planar */
-    x[0] = x[0] * x[0];                         /* [0,1] -> [0,1], cells finer near x = 0 */
-    x[2] = 2.0 * (x[2] + 0.5 * x[2] * x[2]);    /* [0,1] -> [0,3] */
-    x[0] += 0.1 * sin(2.0 * x[2]);
-    x[1] += 0.3 * x[0];
-    x[0] += 0.3 * x[2];
-}
-
-static void shear_linear(double x[3], void *ctx)
-{
-    (void)ctx;
-    x[1] = x[1] * (1.0 + 0.5 * x[1]);           /* graded in y */
-    x[0] += 0.3 * x[2];
-    x[1] += 0.2 * x[0];
 }
 
 int main(void)
