@@ -6,10 +6,7 @@
 #include <math.h>
 #include <stddef.h>
 
-#include "contact/cohesion_sjkr.h"
-#include "contact/normal_edinburgh.h"
-#include "contact/normal_hertz.h"
-#include "contact/normal_hooke.h"
+#include "contact/normal_force.h"
 #include "contact/rolling_cdt.h"
 #include "contact/rolling_cdt_jkr.h"
 #include "contact/rolling_epsd.h"
@@ -121,13 +118,9 @@ static ALWAYS_INLINE void pair_loop(dem_system *s, const enum normal_model norma
 
                 const double vn = vr[0] * en_f[0] + vr[1] * en_f[1] + vr[2] * en_f[2];
 
-                normal_result n;
-                if (normal == NORMAL_HERTZ) n = normal_hertz(c, delta, r_eff, m_eff, vn, fn_floor);
-                else if (normal == NORMAL_HOOKE) n = normal_hooke(c, delta, r_eff, m_eff, vn, v_char, fn_floor);
-                else n = normal_edinburgh(c, delta, r_eff, m_eff, vn, sqrt(contact_radius_sq), fn_floor, h + h_norm);
-
-                double fn = n.fn;
-                if (cohesion == COHESION_SJKR) fn += cohesion_sjkr(c, contact_radius_sq);
+                double fn;
+                const normal_result n = contact_normal(normal, cohesion, c, delta, r_eff, m_eff, vn, v_char, fn_floor,
+                                                       contact_radius_sq, h + h_norm, &fn);
                 double fc[3] = {fn * en_f[0], fn * en_f[1], fn * en_f[2]};
                 if (tangential == TANGENTIAL_HISTORY) {
                     /* contact-point velocity: lever arms to the centre of the overlap */

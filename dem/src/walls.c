@@ -4,10 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "contact/cohesion_sjkr.h"
-#include "contact/normal_edinburgh.h"
-#include "contact/normal_hertz.h"
-#include "contact/normal_hooke.h"
+#include "contact/normal_force.h"
 #include "contact/rolling_cdt.h"
 #include "contact/rolling_cdt_jkr.h"
 #include "contact/rolling_epsd.h"
@@ -128,12 +125,9 @@ static ALWAYS_INLINE void wall_loop(dem_system *s, const enum normal_model norma
                 roughness_normal(h + h_surf, en, 1.0, en_f);
             }
             const double vn = vi[0] * en_f[0] + vi[1] * en_f[1] + vi[2] * en_f[2];
-            normal_result n;
-            if (normal == NORMAL_HERTZ) n = normal_hertz(c, delta, ri, mi, vn, fn_floor);
-            else if (normal == NORMAL_HOOKE) n = normal_hooke(c, delta, ri, mi, vn, v_char, fn_floor);
-            else n = normal_edinburgh(c, delta, ri, mi, vn, sqrt(contact_radius_sq), fn_floor, h + h_norm);
-            double fn = n.fn;
-            if (cohesion == COHESION_SJKR) fn += cohesion_sjkr(c, contact_radius_sq);
+            double fn;
+            const normal_result n = contact_normal(normal, cohesion, c, delta, ri, mi, vn, v_char, fn_floor,
+                                                   contact_radius_sq, h + h_norm, &fn);
             double fc[3] = {fn * en_f[0], fn * en_f[1], fn * en_f[2]};
             const double *wi = p->omega[i];
             const double cr = ri - 0.5 * delta;
