@@ -20,6 +20,10 @@ static void read_domain(const dict *root, dem_system *s)
         if (!(s->domain_max[k] > s->domain_min[k]))
             dict_fatal(d, "max", "max must exceed min in every direction (%c: min %g, max %g)",
                        "xyz"[k], s->domain_min[k], s->domain_max[k]);
+    for (int k = 0; k < 3; k++) {   /* as system_setup_begin: the insertions' overlap checks need it */
+        s->period[k] = s->periodic[k] ? s->domain_max[k] - s->domain_min[k] : 0.0;
+        s->inv_period[k] = s->periodic[k] ? 1.0 / s->period[k] : 0.0;
+    }
 }
 
 static void read_materials(const dict *root, dem_system *s)
@@ -206,16 +210,49 @@ static wall *new_wall(dem_system *s, const dict *d, const char *name)
     return w;
 }
 
+/* A symmetry plane (symmetry.h): no material and no force, so not a wall. It must lie within
+ * the domain (its point inside the domain box) and may not cut a periodic direction. */
+static void read_symmetry_plane(const dict *e, const char *name, dem_system *s)
+{
+    if (dict_has(e, "material"))
+        dict_fatal(e, "material", "a symmetryPlane exerts no force and takes no material");
+    if (s->nsymmetry == DEM_MAX_SYMMETRY_PLANES) dict_fatal_here(e, "at most %d symmetry planes", DEM_MAX_SYMMETRY_PLANES);
+    symmetry_plane *sp = &s->symmetry_planes[s->nsymmetry++];
+    memset(sp, 0, sizeof *sp);
+    snprintf(sp->name, sizeof sp->name, "%s", name);
+    dict_vector(e, "point", sp->point);
+    dict_vector(e, "normal", sp->normal);
+    const double len = sqrt(sp->normal[0] * sp->normal[0] + sp->normal[1] * sp->normal[1] + sp->normal[2] * sp->normal[2]);
+    if (!(len > 0.0)) dict_fatal(e, "normal", "the normal must not be zero");
+    for (int k = 0; k < 3; k++) sp->normal[k] /= len;
+    for (int k = 0; k < 3; k++) {
+        const double slack = 1e-9 * (s->domain_max[k] - s->domain_min[k]);
+        if (!(sp->point[k] >= s->domain_min[k] - slack && sp->point[k] <= s->domain_max[k] + slack))
+            dict_fatal(e, "point", "a symmetryPlane must lie within the domain: point (%g %g %g) is outside "
+                       "min (%g %g %g) max (%g %g %g)", sp->point[0], sp->point[1], sp->point[2],
+                       s->domain_min[0], s->domain_min[1], s->domain_min[2],
+                       s->domain_max[0], s->domain_max[1], s->domain_max[2]);
+        if (s->periodic[k] && fabs(sp->normal[k]) > 1e-12)
+            dict_fatal(e, "normal", "a symmetryPlane cannot cut the periodic direction %c (its normal must be "
+                       "perpendicular to it)", "xyz"[k]);
+    }
+    sp->offset = sp->point[0] * sp->normal[0] + sp->point[1] * sp->normal[1] + sp->point[2] * sp->normal[2];
+}
+
 static void read_walls(const dict *root, dem_system *s)
 {
     const dict *d = dict_sub_opt(root, "walls");
     if (!d) return;
-    static const char *const kinds[] = {"plane", "box", "cylinder", 0};
+    static const char *const kinds[] = {"plane", "box", "cylinder", "symmetryPlane", 0};
     for (int i = 0; i < dict_size(d); i++) {
         const char *name = dict_key_at(d, i);
         if (!dict_is_dict_at(d, i)) dict_fatal(d, name, "a wall is a sub-dictionary { type ...; }");
         const dict *e = dict_dict_at(d, i);
         const int kind = dict_choice(e, "type", kinds);
+        if (kind == 3) {
+            read_symmetry_plane(e, name, s);
+            continue;
+        }
         const int mat = material_of(e, &s->materials);
         if (kind == 0) {
             wall *w = new_wall(s, e, name);
@@ -312,10 +349,23 @@ static void read_region(const dict *e, insertion *ins)
     }
 }
 
-static void run_insertions(const dict *root, dem_system *s, int insert)
+/* The lattice spacing: one number (cubic) or (dx dy dz); at least the largest diameter. */
+static void read_spacing(const dict *e, insertion *ins)
+{
+    dict_scalar_or_vector(e, "spacing", 1e-9, 1e3, ins->spacing);
+    const double dmax = insertion_max_diameter(ins);
+    const double smin = fmin(fmin(ins->spacing[0], ins->spacing[1]), ins->spacing[2]);
+    if (smin < dmax)
+        dict_fatal(e, "spacing", "insertion '%s': the spacing %g m is smaller than the largest diameter %g m%s: "
+                   "neighbouring lattice particles would overlap", ins->name, smin, dmax,
+                   ins->dist == SIZE_CONSTANT ? "" : " (the distribution's largest)");
+}
+
+static void run_insertions(const dict *root, dem_system *s, int insert, const char *constant_dir)
 {
     const dict *d = dict_sub_opt(root, "insertion");
     if (!d) return;
+    static const char *const methods[] = {"random", "lattice", "file", 0};
     for (int i = 0; i < dict_size(d); i++) {
         const char *name = dict_key_at(d, i);
         if (!dict_is_dict_at(d, i)) dict_fatal(d, name, "an insertion is a sub-dictionary");
@@ -323,21 +373,50 @@ static void run_insertions(const dict *root, dem_system *s, int insert)
         insertion ins;
         memset(&ins, 0, sizeof ins);
         snprintf(ins.name, sizeof ins.name, "%s", name);
-        read_region(e, &ins);
-        if (dict_has(e, "number") == dict_has(e, "solidFraction"))
-            dict_fatal_here(e, "give exactly one of 'number' and 'solidFraction'");
-        ins.number = dict_label_opt(e, "number", 0, 1, 100000000);
-        ins.solid_fraction = dict_scalar_opt(e, "solidFraction", 0.0, 1e-6, 0.6);
-        ins.material = material_of(e, &s->materials);
+        ins.method = dict_choice_opt(e, "method", methods, INSERT_RANDOM);
         const double zero[3] = {0, 0, 0};
         dict_vector_opt(e, "velocity", ins.velocity, zero);
-        read_diameter(e, &ins);
         ins.seed = (uint64_t)dict_label_opt(e, "seed", 12345, 0, 2147483647L);
-        ins.max_attempts = (int)dict_label_opt(e, "maxAttempts", 200, 1, 100000000);
-        for (int k = 0; k < 3; k++)
-            if (ins.region == REGION_BOX && (ins.min[k] < s->domain_min[k] || ins.max[k] > s->domain_max[k]))
-                dict_fatal(dict_sub(e, "region"), "min", "the region must lie inside the domain");
-        if (insert) printf("insertion '%s': %ld particles\n", name, insertion_run(s, &ins));
+        if (ins.method == INSERT_FILE) {
+            const char *f = dict_word(e, "file");
+            const int n = f[0] == '/' ? snprintf(ins.file, sizeof ins.file, "%s", f)
+                                      : snprintf(ins.file, sizeof ins.file, "%s/%s", constant_dir, f);
+            if (n >= (int)sizeof ins.file) dict_fatal(e, "file", "the path is too long");
+            ins.material = dict_has(e, "material") ? material_of(e, &s->materials) : -1;
+            ins.has_diameter = dict_has(e, "diameter");
+            if (ins.has_diameter) read_diameter(e, &ins);
+        } else {
+            read_region(e, &ins);
+            ins.material = material_of(e, &s->materials);
+            read_diameter(e, &ins);
+            if (ins.method == INSERT_RANDOM) {
+                if (dict_has(e, "number") == dict_has(e, "solidFraction"))
+                    dict_fatal_here(e, "give exactly one of 'number' and 'solidFraction'");
+                ins.number = dict_label_opt(e, "number", 0, 1, 100000000);
+                ins.solid_fraction = dict_scalar_opt(e, "solidFraction", 0.0, 1e-6, 0.6);
+                ins.max_attempts = (int)dict_label_opt(e, "maxAttempts", 200, 1, 100000000);
+            } else {
+                read_spacing(e, &ins);
+                ins.number = dict_label_opt(e, "number", 0, 1, 100000000);   /* 0: the whole lattice */
+                const double g = sqrt(s->gravity[0] * s->gravity[0] + s->gravity[1] * s->gravity[1] +
+                                      s->gravity[2] * s->gravity[2]);
+                for (int k = 0; k < 3; k++) ins.down[k] = g > 0.0 ? s->gravity[k] / g : (k == 2 ? -1.0 : 0.0);
+            }
+            for (int k = 0; k < 3; k++)
+                if (ins.region == REGION_BOX && (ins.min[k] < s->domain_min[k] || ins.max[k] > s->domain_max[k]))
+                    dict_fatal(dict_sub(e, "region"), "min", "the region must lie inside the domain");
+        }
+        if (insert) {   /* skipped on restart: the particles come from the snapshot */
+            switch (ins.method) {
+            case INSERT_RANDOM: printf("insertion '%s': %ld particles\n", name, insertion_run(s, &ins)); break;
+            case INSERT_LATTICE:
+                printf("insertion '%s': %ld particles (lattice)\n", name, insertion_lattice(s, &ins, e));
+                break;
+            case INSERT_FILE:
+                printf("insertion '%s': %ld particles (from %s)\n", name, insertion_file(s, &ins, e), ins.file);
+                break;
+            }
+        }
         free(ins.d_values);
         free(ins.d_weights);
     }
@@ -380,7 +459,9 @@ void case_read(const char *case_dir, dem_system *s, run_settings *rs, int skip_i
     read_models(root, s);
     read_interactions(root, s);
     read_walls(root, s);
-    run_insertions(root, s, !skip_insertion);
+    char constant_dir[4200];
+    snprintf(constant_dir, sizeof constant_dir, "%s/constant", case_dir);
+    run_insertions(root, s, !skip_insertion, constant_dir);
     rs->max_expected_velocity = dict_has(root, "maxExpectedVelocity")
         ? dict_scalar(root, "maxExpectedVelocity", 1e-6, 1e5) : -1.0;
     dict_check_unused(root);

@@ -850,6 +850,27 @@ void dict_vector_opt(const dict *d, const char *key, double out[3], const double
     value_end(&c);
 }
 
+int dict_scalar_or_vector(const dict *d, const char *key, double lo, double hi, double out[3])
+{
+    entry *e = require(d, key);
+    if (!e->sub && e->ntok == 1) {
+        out[0] = out[1] = out[2] = scalar_of(e, lo, hi);
+        return 1;
+    }
+    cursor c = { e, 0 };
+    if (!e->sub && e->ntok > 0 && e->tok[0].type == T_NUMBER && !is_p(e->ntok > 1 ? &e->tok[1] : NULL, '('))
+        fatal_at(e->file, e->line, key, "expected a number or a vector (x y z)");
+    read_vec3(&c, out);
+    value_end(&c);
+    for (int k = 0; k < 3; k++)
+        if (!(out[k] >= lo && out[k] <= hi)) {
+            char r[128];
+            range_text(lo, hi, r, sizeof r);
+            fatal_at(e->file, e->line, key, "component %d value %.15g is out of range: %s", k + 1, out[k], r);
+        }
+    return 3;
+}
+
 void dict_bools3_opt(const dict *d, const char *key, int out[3], int def)
 {
     entry *e = lookup(d, key);

@@ -48,6 +48,9 @@ int dict_bool_opt(const dict *d, const char *key, int def);
 /* Vectors: exactly three numbers in parentheses. */
 void dict_vector(const dict *d, const char *key, double out[3]);
 void dict_vector_opt(const dict *d, const char *key, double out[3], const double def[3]);
+/* One number `s` (returns 1; out = (s s s)) or a vector `(a b c)` (returns 3), each value in
+ * [lo, hi]; e.g. a lattice spacing. */
+int dict_scalar_or_vector(const dict *d, const char *key, double lo, double hi, double out[3]);
 /* Three booleans in parentheses, e.g. periodic (false false true). */
 void dict_bools3_opt(const dict *d, const char *key, int out[3], int def);
 

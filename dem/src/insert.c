@@ -1,6 +1,12 @@
+/* Random insertion, and the checked placement of given particles (lattice points, file lines)
+ * shared by the other two methods (insert.h). */
 #include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
+#include "dict.h"
 #include "error.h"
 #include "insert.h"
 #include "rng.h"
@@ -21,7 +27,7 @@ double insertion_max_diameter(const insertion *ins)
     return 0.0;
 }
 
-static double draw_diameter(const insertion *ins, rng *r)
+double insertion_draw_diameter(const insertion *ins, rng *r)
 {
     switch (ins->dist) {
     case SIZE_CONSTANT: return ins->d_value;
@@ -96,7 +102,31 @@ static void grid_add(grid *g, const particles *p, int i)
     g->head[cell] = i;
 }
 
-static int overlaps(const dem_system *s, const grid *g, const double x[3], double radius)
+/* Lay the grid over the domain: cells no smaller than dmax, at most about 4 per expected
+ * particle; room in `next` for `capacity` particles. */
+static void grid_init(grid *g, const dem_system *s, double dmax, long expected, long capacity)
+{
+    const long max_cells = 4 * expected + 64;
+    long ncells;
+    for (double size = dmax;; size *= 1.26) {
+        ncells = 1;
+        for (int d = 0; d < 3; d++) {
+            const double len = s->domain_max[d] - s->domain_min[d];
+            g->n[d] = (int)fmax(1.0, fmin(1 << 20, floor(len / size)));
+            if (s->periodic[d] && g->n[d] < 3) g->n[d] = 1;   /* one cell: no wrap duplicates */
+            g->h[d] = len / g->n[d];
+            g->lo[d] = s->domain_min[d];
+            ncells *= g->n[d];
+        }
+        if (ncells <= max_cells) break;
+    }
+    g->head = dem_malloc((size_t)ncells * sizeof(int));
+    for (long c = 0; c < ncells; c++) g->head[c] = -1;
+    g->next = dem_malloc((size_t)(capacity > 0 ? capacity : 1) * sizeof(int));
+}
+
+/* The first particle j whose centre is closer to x than factor (radius + r_j), or -1. */
+static int find_overlap(const dem_system *s, const grid *g, const double x[3], double radius, double factor)
 {
     const particles *p = &s->p;
     int c[3];
@@ -118,10 +148,18 @@ static int overlaps(const dem_system *s, const grid *g, const double x[3], doubl
                         dx -= s->period[d] * nearbyint(dx * s->inv_period[d]);
                         d2 += dx * dx;
                     }
-                    const double reach = radius + p->radius[j];
-                    if (d2 < reach * reach) return 1;
+                    const double reach = factor * (radius + p->radius[j]);
+                    if (d2 < reach * reach) return j;
                 }
             }
+    return -1;
+}
+
+static int overlaps(const dem_system *s, const grid *g, const double x[3], double radius)
+{
+    if (find_overlap(s, g, x, radius, 1.0) >= 0) return 1;
+    for (int k = 0; k < s->nsymmetry; k++)   /* the centre on the particle side of a mirror */
+        if (symmetry_distance(&s->symmetry_planes[k], x) < 0.0) return 1;
     for (int k = 0; k < s->nwalls; k++) {
         double gap, en[3];
         if (wall_gap(&s->walls[k], x, radius, &gap, en) && gap < 0.0) return 1;
@@ -139,24 +177,8 @@ long insertion_run(dem_system *s, const insertion *ins)
     const double target_volume = ins->solid_fraction * region_volume(ins);
     const double mean_volume = M_PI / 6.0 * pow(0.5 * dmax, 3);   /* a low guess: more cells */
     const long expected = p->n + (target > 0 ? target : (long)(target_volume / mean_volume));
-    const long max_cells = 4 * expected + 64;
-    long ncells;
-    for (double size = dmax;; size *= 1.26) {
-        ncells = 1;
-        for (int d = 0; d < 3; d++) {
-            const double len = s->domain_max[d] - s->domain_min[d];
-            g.n[d] = (int)fmax(1.0, fmin(1 << 20, floor(len / size)));
-            if (s->periodic[d] && g.n[d] < 3) g.n[d] = 1;   /* one cell: no wrap duplicates */
-            g.h[d] = len / g.n[d];
-            g.lo[d] = s->domain_min[d];
-            ncells *= g.n[d];
-        }
-        if (ncells <= max_cells) break;
-    }
-    g.head = dem_malloc((size_t)ncells * sizeof(int));
-    for (long c = 0; c < ncells; c++) g.head[c] = -1;
     long capacity = p->n + (target > 0 ? target : 1024);
-    g.next = dem_malloc((size_t)capacity * sizeof(int));
+    grid_init(&g, s, dmax, expected, capacity);
     for (int i = 0; i < p->n; i++) grid_add(&g, p, i);
 
     rng r;
@@ -173,7 +195,7 @@ long insertion_run(dem_system *s, const insertion *ins)
                   "diameter %g m", ins->name, region_extent_ok, dmax_ins);
 
     while (target > 0 ? placed < target : volume < target_volume) {
-        const double radius = 0.5 * draw_diameter(ins, &r);
+        const double radius = 0.5 * insertion_draw_diameter(ins, &r);
         double x[3];
         int ok = 0;
         for (int attempt = 0; attempt < ins->max_attempts && !ok; attempt++) {
@@ -198,4 +220,116 @@ long insertion_run(dem_system *s, const insertion *ins)
     free(g.head);
     free(g.next);
     return placed;
+}
+
+/* ------------------------------------------------------------------ given particles */
+
+void insert_batch_init(insert_batch *b) { memset(b, 0, sizeof *b); }
+
+void insert_batch_free(insert_batch *b)
+{
+    free(b->x); free(b->v); free(b->diameter); free(b->material); free(b->line);
+    memset(b, 0, sizeof *b);
+}
+
+long insert_batch_push(insert_batch *b, const double x[3], const double v[3], double diameter, int material, int line)
+{
+    if (b->n == b->capacity) {
+        b->capacity = b->capacity ? 2 * b->capacity : 1024;
+        b->x = dem_realloc(b->x, (size_t)b->capacity * sizeof *b->x);
+        b->v = dem_realloc(b->v, (size_t)b->capacity * sizeof *b->v);
+        b->diameter = dem_realloc(b->diameter, (size_t)b->capacity * sizeof *b->diameter);
+        b->material = dem_realloc(b->material, (size_t)b->capacity * sizeof *b->material);
+        b->line = dem_realloc(b->line, (size_t)b->capacity * sizeof *b->line);
+    }
+    const long i = b->n++;
+    for (int d = 0; d < 3; d++) { b->x[i][d] = x[d]; b->v[i][d] = v[d]; }
+    b->diameter[i] = diameter;
+    b->material[i] = material;
+    b->line[i] = line;
+    return i;
+}
+
+typedef struct batch_where {
+    const insertion *ins;
+    const insert_batch *b;
+    const char *file;
+    const dict *entry;
+    const char *key;
+} batch_where;
+
+/* "<file>:<line>: error: <msg>" for a file line, else the entry's key with the point. */
+static void batch_fatal(const batch_where *w, long i, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4), noreturn));
+static void batch_fatal(const batch_where *w, long i, const char *fmt, ...)
+{
+    char msg[1024];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(msg, sizeof msg, fmt, ap);
+    va_end(ap);
+    const double *x = w->b->x[i];
+    if (w->file && w->b->line[i] > 0) {
+        char where[4200];
+        snprintf(where, sizeof where, "%s:%d", w->file, w->b->line[i]);
+        dem_fatal_at(where, "particle at (%.10g %.10g %.10g) m: %s", x[0], x[1], x[2], msg);
+    }
+    dict_fatal(w->entry, w->key, "insertion '%s': point %ld at (%.10g %.10g %.10g) m: %s", w->ins->name, i + 1,
+               x[0], x[1], x[2], msg);
+}
+
+long insertion_add_batch(dem_system *s, const insertion *ins, const insert_batch *b,
+                         const char *file, const dict *entry, const char *key)
+{
+    particles *p = &s->p;
+    const batch_where w = {ins, b, file, entry, key};
+    const int n0 = p->n;
+    double dmax = 0.0;
+    for (int i = 0; i < p->n; i++) dmax = fmax(dmax, 2.0 * p->radius[i]);
+    for (long i = 0; i < b->n; i++) dmax = fmax(dmax, b->diameter[i]);
+    if (b->n > 100000000L) batch_fatal(&w, 0, "more than 10^8 particles in one insertion");
+    grid g;
+    grid_init(&g, s, dmax, p->n + b->n, p->n + b->n);
+    for (int i = 0; i < p->n; i++) grid_add(&g, p, i);
+    const double tight = 1.0 - 1e-9;   /* touching (a lattice at spacing = diameter) is allowed */
+    for (long i = 0; i < b->n; i++) {
+        const double *x = b->x[i], r = 0.5 * b->diameter[i];
+        for (int d = 0; d < 3; d++)
+            if (!(x[d] >= s->domain_min[d] && x[d] <= s->domain_max[d]))
+                batch_fatal(&w, i, "the centre lies outside the domain, min (%g %g %g) max (%g %g %g) m",
+                            s->domain_min[0], s->domain_min[1], s->domain_min[2],
+                            s->domain_max[0], s->domain_max[1], s->domain_max[2]);
+        for (int k = 0; k < s->nsymmetry; k++) {
+            const double dist = symmetry_distance(&s->symmetry_planes[k], x);
+            if (dist < -1e-9 * r)
+                batch_fatal(&w, i, "the centre lies %g m beyond symmetryPlane '%s' (centres must be on "
+                            "the side its normal points to)", -dist, s->symmetry_planes[k].name);
+        }
+        for (int k = 0; k < s->nwalls; k++) {
+            double gap, en[3];
+            if (wall_gap(&s->walls[k], x, r, &gap, en) && gap < -1e-9 * r)
+                batch_fatal(&w, i, "the particle (diameter %g m) overlaps wall '%s' by %g m", b->diameter[i],
+                            s->walls[k].name, -gap);
+        }
+        const int j = find_overlap(s, &g, x, r, tight);
+        if (j >= 0) {
+            const double *y = p->x[j];
+            const double dist = sqrt((x[0] - y[0]) * (x[0] - y[0]) + (x[1] - y[1]) * (x[1] - y[1]) + (x[2] - y[2]) * (x[2] - y[2]));
+            if (j < n0)
+                batch_fatal(&w, i, "overlaps particle id %lld at (%g %g %g) m of an earlier insertion (centre "
+                            "distance %g m < sum of radii %g m)", (long long)p->id[j], y[0], y[1], y[2], dist,
+                            r + p->radius[j]);
+            if (file && b->line[i] > 0)
+                batch_fatal(&w, i, "overlaps the particle of line %d (centre distance %.10g m < sum of radii %.10g m)",
+                            b->line[j - n0], dist, r + p->radius[j]);
+            batch_fatal(&w, i, "overlaps point %d at (%g %g %g) m (centre distance %g m < sum of radii %g m)",
+                        j - n0 + 1, y[0], y[1], y[2], dist, r + p->radius[j]);
+        }
+        const int k = particles_add(p, x, b->v[i], r, s->materials.mat[b->material[i]].density, b->material[i],
+                                    s->next_id++);
+        grid_add(&g, p, k);
+    }
+    free(g.head);
+    free(g.next);
+    return b->n;
 }

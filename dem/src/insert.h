@@ -1,34 +1,86 @@
-/* Insertion: fill a box or cylinder region once with non-overlapping spheres (random
- * sequential placement), a given number or up to a solid fraction, with a size distribution. */
+/* Insertion: fill a region once, at t = 0, without overlaps. Three methods:
+ *   random   random sequential placement into a box or cylinder region, a given number or up
+ *            to a solid fraction, with a size distribution (insert.c);
+ *   lattice  the points of a simple cubic (or rectangular) lattice in a box or cylinder region,
+ *            all of them or the lowest `number` along gravity (insert_lattice.c);
+ *   file     positions (and optionally diameters, velocities, materials) read from a file,
+ *            whitespace columns or OpenFOAM's vectorField (insert_file.c).
+ * Lattice and file particles go through insertion_add_batch(), which checks each one against
+ * the domain, the walls, the symmetry planes and every particle already placed (O(N), on a
+ * grid) and stops with a message that names the offending point or file line. */
 #ifndef DEM_INSERT_H
 #define DEM_INSERT_H
 
 #include <stdint.h>
 
+#include "particles.h"
+#include "rng.h"
+
+enum insertion_method { INSERT_RANDOM, INSERT_LATTICE, INSERT_FILE };
 enum size_distribution { SIZE_CONSTANT, SIZE_UNIFORM, SIZE_NORMAL, SIZE_DISCRETE };
 enum region_kind { REGION_BOX, REGION_CYLINDER };
 
 typedef struct insertion {
     char name[64];
+    enum insertion_method method;
     enum region_kind region;
     double min[3], max[3];          /* box; for a cylinder the axial range is min/max[axis] */
     int axis;                       /* cylinder */
     double centre[2], radius;       /* cylinder */
-    long number;                    /* > 0: this many particles */
-    double solid_fraction;          /* else: fill to this solid fraction of the region */
-    int material;
+    long number;                    /* > 0: this many particles (lattice: the lowest this many; 0: all) */
+    double solid_fraction;          /* random: else fill to this solid fraction of the region */
+    int material;                   /* -1: none given (file: then every line must name one) */
     double velocity[3];
+    int has_diameter;               /* file: a diameter entry was given */
     enum size_distribution dist;
     double d_value, d_min, d_max, d_mean, d_std;  /* diameters [m] */
     int ndiscrete;
     double *d_values, *d_weights;
     uint64_t seed;
     int max_attempts;
+    double spacing[3];              /* lattice [m] */
+    double down[3];                 /* lattice: unit vector along gravity (-z without gravity) */
+    char file[4096];                /* file: the resolved path */
 } insertion;
 
+/* Particles given one by one (lattice points, file lines), before they are placed. */
+typedef struct insert_batch {
+    long n, capacity;
+    vec3 *x, *v;
+    double *diameter;               /* [m] */
+    int *material;
+    int *line;                      /* file line of each particle (file insertions) */
+} insert_batch;
+
+void insert_batch_init(insert_batch *b);
+void insert_batch_free(insert_batch *b);
+long insert_batch_push(insert_batch *b, const double x[3], const double v[3], double diameter, int material, int line);
+
 struct dem_system;
-/* Insert; fatal (naming the insertion) when the particles do not fit. Returns the count. */
+struct dict;
+/* Random insertion; fatal (naming the insertion) when the particles do not fit. Returns the count. */
 long insertion_run(struct dem_system *s, const insertion *ins);
 double insertion_max_diameter(const insertion *ins);
+double insertion_draw_diameter(const insertion *ins, rng *r);
+
+/* Lattice points of the region, in order (x fastest, then y, then z), keeping the lowest
+ * ins->number along ins->down when number > 0. Fatal (naming `key` of `entry`) when the
+ * lattice holds fewer points. Returns the count; *xyz malloc'd, 3 doubles per point. */
+long lattice_points(const insertion *ins, const struct dict *entry, double **xyz);
+/* Lattice insertion: the points, diameters drawn from the distribution (seed), checked and placed. */
+long insertion_lattice(struct dem_system *s, const insertion *ins, const struct dict *entry);
+
+/* Read a positions file into b (formats in insert_file.c); fatal with "<file>:<line>: ..." on
+ * any error. Columns missing from a line take the insertion's diameter, velocity, material. */
+void insert_file_read(const struct dem_system *s, const insertion *ins, insert_batch *b);
+/* File insertion: read, check and place. */
+long insertion_file(struct dem_system *s, const insertion *ins, const struct dict *entry);
+
+/* Check each particle of b (centre inside the domain, on the particle side of every symmetry
+ * plane, no wall overlap, no overlap with any particle placed before or earlier in b: centre
+ * distance >= (r_i + r_j)(1 - 1e-9)) and add it. Errors name file:line when b->line is set and
+ * `file` is given, else the point and `key` of `entry`. Returns the count. */
+long insertion_add_batch(struct dem_system *s, const insertion *ins, const insert_batch *b,
+                         const char *file, const struct dict *entry, const char *key);
 
 #endif

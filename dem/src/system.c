@@ -104,7 +104,10 @@ static void half_kick(particles *p, double dt)
 /* First half of the velocity-Verlet step in one pass over the particles: half kick, drift,
  * the forces reset to gravity + external (the old forces are not needed after the kick), and
  * whether a particle moved more than half the skin since the last list build. Written so that
- * the compiler vectorises it: no reductions other than an integer or. */
+ * the compiler vectorises it: no reductions other than an integer or. With symmetry planes the
+ * same pass mirrors, between drift and reset, the centres that crossed a plane (symmetry.h; the
+ * bounce needs the old force); that loop has a branch and is kept apart, so that a case without
+ * planes runs the vectorised one. */
 static int kick_drift_reset(dem_system *s)
 {
     particles *p = &s->p;
@@ -116,14 +119,31 @@ static int kick_drift_reset(dem_system *s)
     const double limit = 0.25 * s->nlist.skin * s->nlist.skin;
     const int listed = p->n < s->nlist.rows ? p->n : s->nlist.rows;   /* added since: rebuild */
     int moved_far = p->n != s->nlist.rows;
+    if (s->nsymmetry == 0) {
 #pragma GCC ivdep   /* the arrays do not overlap (restrict is not enough for GCC 12 here) */
-    for (int i = 0; i < p->n; i++) {
-        for (int d = 0; d < 3; d++) {
-            v[i][d] += h * inv_mass[i] * f[i][d];
-            w[i][d] += h * inv_inertia[i] * t[i][d];
-            x[i][d] += dt * v[i][d];
-            f[i][d] = mass[i] * g[d] + f_ext[i][d];
-            t[i][d] = 0.0;
+        for (int i = 0; i < p->n; i++) {
+            for (int d = 0; d < 3; d++) {
+                v[i][d] += h * inv_mass[i] * f[i][d];
+                w[i][d] += h * inv_inertia[i] * t[i][d];
+                x[i][d] += dt * v[i][d];
+                f[i][d] = mass[i] * g[d] + f_ext[i][d];
+                t[i][d] = 0.0;
+            }
+        }
+    } else {
+        const symmetry_plane *planes = s->symmetry_planes;
+        const int nplanes = s->nsymmetry;
+        for (int i = 0; i < p->n; i++) {
+            for (int d = 0; d < 3; d++) {
+                v[i][d] += h * inv_mass[i] * f[i][d];
+                w[i][d] += h * inv_inertia[i] * t[i][d];
+                x[i][d] += dt * v[i][d];
+            }
+            symmetry_apply(planes, nplanes, x[i], v[i], f[i], inv_mass[i], dt);
+            for (int d = 0; d < 3; d++) {
+                f[i][d] = mass[i] * g[d] + f_ext[i][d];
+                t[i][d] = 0.0;
+            }
         }
     }
     for (int i = 0; i < listed; i++) {

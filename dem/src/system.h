@@ -6,6 +6,7 @@
 #include "materials.h"
 #include "neighbour.h"
 #include "particles.h"
+#include "symmetry.h"
 #include "walls.h"
 
 typedef struct dem_system {
@@ -24,6 +25,8 @@ typedef struct dem_system {
     double *wall_history;             /* [particle][wall][history_size] */
     int *wall_candidates[DEM_MAX_WALLS];   /* particles within radius + skin of each wall */
     int wall_ncandidates[DEM_MAX_WALLS];
+    int nsymmetry;                    /* symmetry planes: mirrors without force (symmetry.h) */
+    symmetry_plane symmetry_planes[DEM_MAX_SYMMETRY_PLANES];
 
     neighbour_list nlist;
 
