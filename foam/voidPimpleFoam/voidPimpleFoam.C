@@ -33,14 +33,23 @@ Description
       (phiForces, as DPMFoam's phicForces), so that pressure and body forces balance face by
       face and a fluid at rest stays at rest (with fixedFluxPressure on walls).
 
-    faceMomentum (optional, PIMPLE { faceMomentum false; } to switch off; default true): the implicit drag
-      acts at the faces, Kf phi with Kf = alpha_f interpolate(Ksl/(rho_f alpha)) (the resistance
-      per unit superficial velocity, interpolated), so the face flux is
-        phi = [phiHbyA' + rAU_f phiForces' - c rAU_f snGrad(p) |S_f|] / (1 + rAU_f Kf)
-      with rAU of the momentum matrix without the drag, and the cell velocity is reconstructed
-      from the superficial fluxes, U = reconstruct(alpha_f phi)/alpha. This keeps the drag of
-      the cells at a bed's ends (packed cell next to free fluid) and removes the odd-even
-      velocity pattern that the cell-centred drag leaves in the free fluid next to a bed.
+    faceMomentum (PIMPLE { faceMomentum true; }, the default; false gives the cell form):
+      the momentum equation is solved at the faces for the flux, every term with face
+      coefficients (as twoPhaseEulerFoam's faceMomentum; pEqnFace.H):
+        (alpha_f phi - alpha_f^0 phi^0)/dt + interp(A) phi - flux(H) + Kf phi
+          = flux((Ksl Up + fExplicit)/rho_f) + alpha_f g.S_f - c snGrad(p) |S_f|
+      with A, H of the momentum matrix without the time derivative and the drag, and
+      Kf = alpha_f interpolate(Ksl/(rho_f alpha)), the resistance per unit superficial
+      velocity interpolated; the cell velocity is rebuilt from the superficial fluxes,
+      U = reconstruct(alpha_f phi)/alpha. Each face term is the interpolation of the cell
+      term it stands for, so that summed over a column the pressure drop equals the force
+      the particles give the fluid, its weight and its acceleration (momentumBalance.H
+      writes that balance every step), and a packed cell next to free fluid keeps its drag
+      (the bed's ends keep their pressure drop, the free fluid has no odd-even pattern).
+      The cell form (faceMomentum false, DPMFoam's) has the time derivative and the drag
+      in the cells and a momentum predictor; it also balances momentum, but a packed cell
+      next to free fluid gets about half its velocity (half a cell of pressure drop lost at
+      each end of a packed bed).
 
     Since p keeps its hydrostatic part, the C side gets the full gradient
     rho_f fvc::grad(p) [Pa/m] and computes the particles' pressure-gradient (buoyancy) force
@@ -51,7 +60,8 @@ Description
          then alpha, Ksl, Up, fExplicit of the new particle state (alpha's old value is kept
          for ddt(alpha));
       2. fluid: the PIMPLE loop;
-      3. write times: alpha, U, p, phi, Ksl, Up, fExplicit and particleSource
+      3. the momentum balance of the fluid (postProcessing/momentumBalance.dat);
+         write times: alpha, U, p, phi, Ksl, Up, fExplicit and particleSource
          (= Ksl (Up - U) + fExplicit [N/m^3], the particles' force density on the fluid)
          as OpenFOAM fields; particles to <case>/particles.h5 + particles.xdmf (also at the
          start time).
@@ -81,6 +91,9 @@ Description
 #include "uniformDimensionedFields.H"
 #include "IFstream.H"
 #include "clockTime.H"
+#include "OFstream.H"
+#include "wallFvPatch.H"
+#include "fixedFluxPressureFvPatchScalarField.H"
 
 #include "demCoupling.H"
 
@@ -125,6 +138,11 @@ int main(int argc, char *argv[])
     alphaf = fvc::interpolate(alpha);
     alphaPhi = alphaf*phi;
 
+    // The fluid's momentum int(alpha U) dV at the last step, and the balance file
+    // (momentumBalance.H)
+    vector momentumOld(gSum(alpha.primitiveField()*U.primitiveField()*mesh.V().field()));
+    autoPtr<OFstream> momentumFile;
+
     // The particles' initial state opens the HDF5/XDMF series
     coupling.write(runTime.value());
 
@@ -154,6 +172,7 @@ int main(int argc, char *argv[])
         {
             alpha.oldTime() == alpha;
         }
+        alphaf0 = fvc::interpolate(alpha.oldTime());
         alphaf = fvc::interpolate(alpha);
         alphaPhi = alphaf*phi;
 
@@ -176,7 +195,14 @@ int main(int argc, char *argv[])
             // --- Pressure corrector loop
             while (pimple.correct())
             {
-                #include "pEqn.H"
+                if (faceMomentum)
+                {
+                    #include "pEqnFace.H"
+                }
+                else
+                {
+                    #include "pEqn.H"
+                }
             }
 
             if (pimple.turbCorr())
@@ -188,6 +214,8 @@ int main(int argc, char *argv[])
         particleSource = Ksl*(Up - U) + fExplicit;
 
         fluidTime += clock.timeIncrement();
+
+        #include "momentumBalance.H"
 
         // --- 3. output
         if (runTime.writeTime())
