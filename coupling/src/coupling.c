@@ -24,6 +24,7 @@
 #include "interpolate.h"
 #include "io.h"
 #include "particle_forces.h"
+#include "restart.h"
 #include "system.h"
 #include "timestep.h"
 #include "voidfraction.h"
@@ -56,6 +57,7 @@ struct coupling {
     FILE *means;
     double dem_seconds, coupling_seconds;
     long outside_reported;
+    int restarted;                /* continued from a particle snapshot at t_start > 0 */
 };
 
 static double now(void)
@@ -204,7 +206,72 @@ static void write_means(coupling *c)
     fflush(c->means);
 }
 
-coupling *coupling_create(const char *case_dir, cpl_mesh *mesh, double rho_f, double nu_f, double dt_f)
+/* postProcessing/particles.dat: a fresh run writes it anew; a continued run keeps the lines up
+ * to its start time and goes on after them, so the file stays one continuous record. */
+static void open_means(coupling *c, const char *path)
+{
+    static const char header[] = "# time [s], particles, mean position x y z [m], mean velocity x y z [m/s]\n";
+    char *kept = NULL;
+    size_t nkept = 0;
+    FILE *old = c->restarted ? fopen(path, "r") : NULL;
+    if (old) {
+        char line[1024];
+        size_t cap = 0;
+        while (fgets(line, sizeof line, old)) {
+            if (line[0] == '#') continue;
+            char *end;
+            const double t = strtod(line, &end);
+            if (end == line || !(t <= c->s.time + 0.5 * c->s.dt)) continue;
+            const size_t len = strlen(line);
+            if (nkept + len + 1 > cap) {
+                cap = 2 * (nkept + len + 1) + 4096;
+                kept = dem_realloc(kept, cap);
+            }
+            memcpy(kept + nkept, line, len + 1);
+            nkept += len;
+        }
+        fclose(old);
+    }
+    c->means = fopen(path, "w");
+    if (!c->means) dem_fatal("coupling: cannot write %s", path);
+    fputs(header, c->means);
+    if (nkept) fputs(kept, c->means);
+    free(kept);
+    if (!nkept) write_means(c);
+    else fflush(c->means);
+}
+
+/* The particles of a fresh run (insertion at t = 0), or of a run continued from t_start > 0:
+ * the snapshot of <case>/particles.h5 at t_start with its contact history and forces, later
+ * snapshots dropped (they are written again). */
+static void setup_particles(coupling *c, const char *case_dir, double t_start)
+{
+    c->restarted = t_start > 0.0;
+    case_read(case_dir, &c->s, &c->rs, c->restarted);
+    contact_state saved;
+    memset(&saved, 0, sizeof saved);
+    char base[4200];
+    snprintf(base, sizeof base, "%s/particles", case_dir);
+    if (c->restarted) {
+        if (restart_read(&c->s, base, t_start, 0.5 * c->s.dt, &saved) != 0)
+            dem_fatal("%s.h5: no complete particle snapshot at t = %g s, where the fluid starts (a coupled "
+                      "run starts at t = 0, or continues from a write time: its fields and its particle "
+                      "snapshot)", base, t_start);
+        c->s.time = t_start;   /* the fluid's time name, exactly */
+        const int dropped = io_drop_snapshots_after(base, t_start);
+        printf("coupling: continuing from %s.h5 at t = %g s (DEM step %ld), %d particles%s\n", base,
+               c->s.time, c->s.step, c->s.p.n, dropped ? "; later snapshots dropped" : "");
+    }
+    const double vmax = c->rs.max_expected_velocity > 0 ? c->rs.max_expected_velocity
+                                                        : case_default_max_velocity(&c->s);
+    timestep_check(&c->s, vmax, c->rs.timestep_override, c->rs.timestep_source);
+    restart_setup(&c->s, c->restarted ? &saved : NULL);
+    contact_state_free(&saved);
+    c->writer = io_open_writer(base, c->restarted);
+}
+
+coupling *coupling_create(const char *case_dir, cpl_mesh *mesh, double rho_f, double nu_f, double dt_f,
+                          double t_start)
 {
     coupling *c = calloc(1, sizeof *c);
     if (!c) dem_fatal("coupling: out of memory");
@@ -213,11 +280,7 @@ coupling *coupling_create(const char *case_dir, cpl_mesh *mesh, double rho_f, do
     memset(mesh, 0, sizeof *mesh);
 
     system_init(&c->s);
-    case_read(case_dir, &c->s, &c->rs, 0);
-    const double vmax = c->rs.max_expected_velocity > 0 ? c->rs.max_expected_velocity
-                                                        : case_default_max_velocity(&c->s);
-    timestep_check(&c->s, vmax, c->rs.timestep_override, c->rs.timestep_source);
-    system_setup(&c->s);
+    setup_particles(c, case_dir, t_start);
 
     double alpha_min, kernel_width, kernel_cutoff;
     enum cpl_vf_model vf_model;
@@ -242,17 +305,12 @@ coupling *coupling_create(const char *case_dir, cpl_mesh *mesh, double rho_f, do
     update_void_fraction(c);
 
     char path[4200];
-    snprintf(path, sizeof path, "%s/particles", case_dir);
-    c->writer = io_open_writer(path, 0);
     snprintf(path, sizeof path, "%s/postProcessing", case_dir);
     char cmd[4400];
     snprintf(cmd, sizeof cmd, "mkdir -p '%s'", path);
     if (system(cmd) != 0) dem_fatal("coupling: cannot create %s", path);
     snprintf(path, sizeof path, "%s/postProcessing/particles.dat", case_dir);
-    c->means = fopen(path, "w");
-    if (!c->means) dem_fatal("coupling: cannot write %s", path);
-    fprintf(c->means, "# time [s], particles, mean position x y z [m], mean velocity x y z [m/s]\n");
-    write_means(c);
+    open_means(c, path);
     printf("coupling: %d particles, %d fluid cells; %d DEM steps of %g s per fluid step; void fraction %s "
            "(alphaMin %g), drag %s, model %s, %s exchange, %s interpolation\n",
            c->s.p.n, nc, c->interval, c->s.dt, vf_model == CPL_VF_CENTRE ? "centre" : vf_model == CPL_VF_DIVIDED ? "divided" : "gaussian",
@@ -302,9 +360,18 @@ void coupling_particle_means(const coupling *c, double v[3], double x[3])
 
 void coupling_write(coupling *c, double time)
 {
-    (void)time;   /* the snapshot carries the DEM's own time, equal to the fluid's at an exchange */
-    io_write_snapshot(c->writer, &c->s.p, c->s.time, c->s.step);
+    /* at an exchange the DEM's time is the fluid's; the snapshot takes the fluid's exactly, so
+     * that a run continued from this write time finds it; with the contact history, so that it
+     * continues the contacts */
+    if (fabs(time - c->s.time) > 0.5 * c->s.dt)
+        dem_fatal("coupling: particle snapshot asked at t = %g s, but the DEM is at t = %g s", time, c->s.time);
+    contact_state cs;
+    restart_save_contacts(&c->s, &cs);
+    io_write_snapshot_contacts(c->writer, &c->s.p, time, c->s.step, &cs);
+    contact_state_free(&cs);
 }
+
+int coupling_restarted(const coupling *c) { return c->restarted; }
 
 void coupling_timings(const coupling *c, double *dem_s, double *coupling_s)
 {

@@ -32,9 +32,14 @@ typedef struct coupling coupling;
 enum cpl_model_type { CPL_MODEL_A, CPL_MODEL_B };
 
 /* mesh: filled by cpl_mesh_init (the session takes it over). rho_f [kg/m^3], nu_f [m^2/s],
- * dt_f: the fluid time step [s], which must equal couplingInterval x the DEM timeStep. Errors in
- * the dictionaries stop the program with file, line and key. */
-coupling *coupling_create(const char *case_dir, cpl_mesh *mesh, double rho_f, double nu_f, double dt_f);
+ * dt_f: the fluid time step [s], which must equal couplingInterval x the DEM timeStep. t_start:
+ * the fluid's start time [s]; 0 inserts the particles of demProperties, a later time continues
+ * from the snapshot of <case>/particles.h5 at that time (contacts and forces included; later
+ * snapshots are dropped). Errors in the dictionaries stop the program with file, line and key. */
+coupling *coupling_create(const char *case_dir, cpl_mesh *mesh, double rho_f, double nu_f, double dt_f,
+                          double t_start);
+/* 1 when the session continued from a snapshot (t_start > 0). */
+int coupling_restarted(const coupling *c);
 void coupling_free(coupling *c);
 
 /* U: fluid velocity per cell [m/s]; grad_p: pressure gradient per cell [Pa/m]. */

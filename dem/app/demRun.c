@@ -86,17 +86,8 @@ int main(int argc, char **argv)
     contact_state saved;
     memset(&saved, 0, sizeof saved);
     if (restart) {
-        long step;
-        if (io_read_last_snapshot_contacts(base, &s.p, &s.time, &step, &saved) != 0)
+        if (restart_read(&s, base, NAN, 0.0, &saved) != 0)
             dem_fatal("%s.h5: no complete snapshot to restart from", base);
-        s.step = step;
-        for (int i = 0; i < s.p.n; i++) {
-            if (s.p.type[i] < 0 || s.p.type[i] >= s.materials.ntypes)
-                dem_fatal("%s.h5: particle id %lld has type %d, but the case defines %d materials",
-                          base, (long long)s.p.id[i], s.p.type[i], s.materials.ntypes);
-            particles_set_mass(&s.p, i, s.materials.mat[s.p.type[i]].density);
-            if (s.p.id[i] >= s.next_id) s.next_id = s.p.id[i] + 1;
-        }
         printf("restart from %s.h5 at t = %g s (step %ld), %d particles\n", base, s.time, s.step, s.p.n);
     }
     const double vmax = rs.max_expected_velocity > 0 ? rs.max_expected_velocity : case_default_max_velocity(&s);

@@ -53,4 +53,12 @@ int io_read_last_snapshot(const char *base, particles *p, double *time, long *st
 int io_read_last_snapshot_contacts(const char *base, particles *p, double *time, long *step,
                                    contact_state *cs);
 
+/* The snapshot at at_time (the last complete one within tolerance of it; NAN: the last). Returns
+ * -1 when there is none; otherwise as io_read_last_snapshot_contacts (cs may be NULL). */
+int io_read_snapshot_at(const char *base, double at_time, double tolerance, particles *p, double *time,
+                        long *step, contact_state *cs);
+/* Remove the complete snapshots later than after_time (a run continued from an earlier time
+ * rewrites them, as OpenFOAM rewrites later time directories). Returns how many. */
+int io_drop_snapshots_after(const char *base, double after_time);
+
 #endif

@@ -9,6 +9,7 @@
  * program through dem_fatal with the file name and the innermost HDF5 message. */
 #include <errno.h>
 #include <inttypes.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -569,6 +570,12 @@ int io_read_last_snapshot(const char *base, particles *p, double *time, long *st
 int io_read_last_snapshot_contacts(const char *base, particles *p, double *time, long *step,
                                    contact_state *cs)
 {
+    return io_read_snapshot_at(base, NAN, 0.0, p, time, step, cs);
+}
+
+int io_read_snapshot_at(const char *base, double at_time, double tolerance, particles *p, double *time,
+                        long *step, contact_state *cs)
+{
     h5_quiet();
     char *path = str_cat(base, ".h5");
     hid_t fapl = make_fapl(path);
@@ -584,7 +591,17 @@ int io_read_last_snapshot_contacts(const char *base, particles *p, double *time,
         free(path);
         return -1;
     }
-    const snapshot_info last = s.complete[s.ncomplete - 1];
+    int pick = s.ncomplete - 1;     /* the last; or the last one at at_time */
+    if (!isnan(at_time)) {
+        while (pick >= 0 && !(fabs(s.complete[pick].time - at_time) <= tolerance)) pick--;
+        if (pick < 0) {
+            free(s.complete);
+            chk(H5Fclose(file), path, "cannot close file");
+            free(path);
+            return -1;
+        }
+    }
+    const snapshot_info last = s.complete[pick];
     free(s.complete);
     if (last.n < 0 || last.n > INT32_MAX)
         dem_fatal("HDF5 file '%s': snapshot %06ld has an invalid particle count %" PRId64, path,
@@ -621,4 +638,33 @@ int io_read_last_snapshot_contacts(const char *base, particles *p, double *time,
     if (time) *time = last.time;
     if (step) *step = last.step;
     return 0;
+}
+
+int io_drop_snapshots_after(const char *base, double after_time)
+{
+    h5_quiet();
+    char *path = str_cat(base, ".h5");
+    hid_t fapl = make_fapl(path);
+    hid_t file = chk(H5Fopen(path, H5F_ACC_RDWR, fapl), path, "cannot open file to drop snapshots");
+    H5Pclose(fapl);
+    scan_state s;
+    scan_snapshots(file, path, &s);
+    free(s.incomplete);
+    int dropped = 0;
+    if (s.ncomplete > 0) {
+        hid_t g = chk(H5Gopen2(file, "snapshots", H5P_DEFAULT), path, "cannot open /snapshots");
+        for (int k = 0; k < s.ncomplete; k++) {
+            if (!(s.complete[k].time > after_time)) continue;
+            char name[32];
+            snapshot_name(name, sizeof name, s.complete[k].index);
+            chk(H5Ldelete(g, name, H5P_DEFAULT), path, "cannot delete a snapshot group");
+            dropped++;
+        }
+        H5Gclose(g);
+    }
+    free(s.complete);
+    chk(H5Fflush(file, H5F_SCOPE_LOCAL), path, "cannot flush file");
+    chk(H5Fclose(file), path, "cannot close file");
+    free(path);
+    return dropped;
 }

@@ -89,3 +89,18 @@ void restart_setup(dem_system *s, const contact_state *cs)
     printf("restart: contact history of %ld of %ld particle pairs restored\n", restored, cs->npairs);
     if (!keep_forces) system_compute_forces(s);
 }
+
+int restart_read(dem_system *s, const char *base, double at_time, double tolerance, contact_state *cs)
+{
+    long step;
+    if (io_read_snapshot_at(base, at_time, tolerance, &s->p, &s->time, &step, cs) != 0) return -1;
+    s->step = step;
+    for (int i = 0; i < s->p.n; i++) {
+        if (s->p.type[i] < 0 || s->p.type[i] >= s->materials.ntypes)
+            dem_fatal("%s.h5: particle id %lld has type %d, but the case defines %d materials",
+                      base, (long long)s->p.id[i], s->p.type[i], s->materials.ntypes);
+        particles_set_mass(&s->p, i, s->materials.mat[s->p.type[i]].density);
+        if (s->p.id[i] >= s->next_id) s->next_id = s->p.id[i] + 1;
+    }
+    return 0;
+}

@@ -12,5 +12,10 @@ void restart_save_contacts(const dem_system *s, contact_state *cs);
  * walls. A snapshot written with other models or walls cannot be matched: its history is
  * dropped with a warning. */
 void restart_setup(dem_system *s, const contact_state *cs);
+/* Read the particles of <base>.h5's snapshot at at_time (within tolerance; NAN: the last
+ * complete one) into s, with their masses from the case's materials, the time and step, and
+ * the contact history into cs (for restart_setup). Returns -1 when there is no such snapshot;
+ * fatal when a particle's type is not among the case's materials. */
+int restart_read(dem_system *s, const char *base, double at_time, double tolerance, contact_state *cs);
 
 #endif

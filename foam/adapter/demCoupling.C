@@ -34,7 +34,8 @@ Foam::demCoupling::demCoupling
     const fvMesh& mesh,
     scalar rho,
     scalar nu,
-    scalar deltaT
+    scalar deltaT,
+    scalar startTime
 )
 :
     mesh_(mesh),
@@ -110,7 +111,7 @@ Foam::demCoupling::demCoupling
         << " cells" << nl;
 
     const fileName caseDir(mesh.time().path());
-    session_ = coupling_create(caseDir.c_str(), m, rho, nu, deltaT);
+    session_ = coupling_create(caseDir.c_str(), m, rho, nu, deltaT, startTime);
     if (!session_)
     {
         FatalErrorInFunction
@@ -140,6 +141,12 @@ Foam::demCoupling::~demCoupling()
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::demCoupling::restarted() const
+{
+    return coupling_restarted(session_);
+}
+
 
 Foam::label Foam::demCoupling::nParticles() const
 {

@@ -92,6 +92,8 @@ Description
 #include "IFstream.H"
 #include "clockTime.H"
 #include "OFstream.H"
+#include <fstream>
+#include <cstdlib>
 #include "wallFvPatch.H"
 #include "fixedFluxPressureFvPatchScalarField.H"
 
@@ -122,7 +124,7 @@ int main(int argc, char *argv[])
     #include "initContinuityErrs.H"
 
     // --- the coupling session: copies the mesh, reads demProperties and couplingProperties
-    demCoupling coupling(mesh, rhoFluid.value(), nuFluid, runTime.deltaTValue());
+    demCoupling coupling(mesh, rhoFluid.value(), nuFluid, runTime.deltaTValue(), runTime.value());
 
     const bool modelA = coupling.modelA();
     // c of the pressure term at the faces: alpha_f (model A) or 1 (model B)
@@ -138,13 +140,21 @@ int main(int argc, char *argv[])
     alphaf = fvc::interpolate(alpha);
     alphaPhi = alphaf*phi;
 
+    // A run from t = 0 begins from its initial conditions; from a later time it continues
+    // (the fields of that time, the particles of their snapshot at that time)
+    const bool restarted = coupling.restarted();
+    #include "initialFlow.H"
+
     // The fluid's momentum int(alpha U) dV at the last step, and the balance file
     // (momentumBalance.H)
     vector momentumOld(gSum(alpha.primitiveField()*U.primitiveField()*mesh.V().field()));
     autoPtr<OFstream> momentumFile;
 
-    // The particles' initial state opens the HDF5/XDMF series
-    coupling.write(runTime.value());
+    // The particles' initial state opens the HDF5/XDMF series (a continued run has it already)
+    if (!restarted)
+    {
+        coupling.write(runTime.value());
+    }
 
     #include "CourantNo.H"
 

@@ -49,7 +49,7 @@ static void settle(const char *model, const char *interp)
     cpl_mesh_box(&m, lo, hi, 4, 4, 20);
     const int nc = m.ncells;
     const double rho_f = 10.0, nu = 1e-5, g = 9.81;
-    coupling *c = coupling_create(dir, &m, rho_f, nu, 1e-4);
+    coupling *c = coupling_create(dir, &m, rho_f, nu, 1e-4, 0.0);
     double (*U)[3] = calloc((size_t)nc, sizeof *U), (*gp)[3] = calloc((size_t)nc, sizeof *gp);
     for (int k = 0; k < nc; k++) gp[k][2] = -rho_f * g;   /* hydrostatic: grad p = rho_f g */
     double v[3], x[3], fluid_z = 0.0;
