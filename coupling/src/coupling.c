@@ -58,6 +58,9 @@ struct coupling {
     double dem_seconds, coupling_seconds;
     long outside_reported;
     int restarted;                /* continued from a particle snapshot at t_start > 0 */
+    double wall_force[3];         /* the walls' force on the particles, mean over the last
+                                     fluid step's DEM steps [N] */
+    double fluid_force[3];        /* the fluid's force on the particles, the same mean [N] */
 };
 
 static double now(void)
@@ -198,19 +201,54 @@ static void apply_fluid_forces(coupling *c)
     }
 }
 
+/* sum += the fluid's force on all particles in this DEM step (f_ext as the step used it) */
+static void add_fluid_force(const coupling *c, double sum[3])
+{
+    const particles *p = &c->s.p;
+    double f[3] = {0.0, 0.0, 0.0};
+    for (int i = 0; i < p->n; i++)
+        for (int q = 0; q < 3; q++) f[q] += p->f_ext[i][q];
+    for (int q = 0; q < 3; q++) sum[q] += f[q];
+}
+
 static void write_means(coupling *c)
 {
     double v[3], x[3];
     coupling_particle_means(c, v, x);
-    fprintf(c->means, "%.9g %d %.9g %.9g %.9g %.9g %.9g %.9g\n", c->s.time, c->s.p.n, x[0], x[1], x[2], v[0], v[1], v[2]);
+    const double *fw = c->wall_force, *ff = c->fluid_force;
+    fprintf(c->means, "%.9g %d %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.9g\n", c->s.time, c->s.p.n,
+            x[0], x[1], x[2], v[0], v[1], v[2], fw[0], fw[1], fw[2], ff[0], ff[1], ff[2]);
     fflush(c->means);
+}
+
+/* The centre void fraction puts a particle's whole volume into the cell of its centre: a particle
+ * wider than its cell (d > V_cell^(1/3)) drives that cell to alphaMin and leaves its neighbours
+ * empty. Said once, at the start. */
+static void warn_large_particles(const coupling *c)
+{
+    const particles *p = &c->s.p;
+    int count = 0;
+    double worst = 0.0;
+    for (int i = 0; i < p->n; i++) {
+        if (c->cell[i] < 0) continue;
+        const double ratio = 2.0 * p->radius[i] / cbrt(c->mesh.cell_volume[c->cell[i]]);
+        if (ratio > 1.0) count++;
+        worst = fmax(worst, ratio);
+    }
+    if (count)
+        dem_warning("couplingProperties: voidFraction model centre: %d of %d particles are wider than their fluid "
+                    "cell (d up to %.2f times the cell size V_cell^(1/3)); the centre model puts each particle's "
+                    "volume into one cell, so those cells fall to alphaMin: use a coarser mesh or model divided",
+                    count, p->n, worst);
 }
 
 /* postProcessing/particles.dat: a fresh run writes it anew; a continued run keeps the lines up
  * to its start time and goes on after them, so the file stays one continuous record. */
 static void open_means(coupling *c, const char *path)
 {
-    static const char header[] = "# time [s], particles, mean position x y z [m], mean velocity x y z [m/s]\n";
+    static const char header[] = "# time [s], particles, mean position x y z [m], mean velocity x y z [m/s], "
+                                 "the walls' force on the particles x y z [N], the fluid's force on the particles x y z [N] "
+                                 "(both the mean over the fluid step's DEM steps)\n";
     char *kept = NULL;
     size_t nkept = 0;
     FILE *old = c->restarted ? fopen(path, "r") : NULL;
@@ -303,6 +341,7 @@ coupling *coupling_create(const char *case_dir, cpl_mesh *mesh, double rho_f, do
     c->source = calloc((size_t)nc, sizeof *c->source);
     if (!c->ksl || !c->up || !c->source) dem_fatal("coupling: out of memory for %d cells", nc);
     update_void_fraction(c);
+    if (vf_model == CPL_VF_CENTRE) warn_large_particles(c);
 
     char path[4200];
     snprintf(path, sizeof path, "%s/postProcessing", case_dir);
@@ -325,9 +364,16 @@ void coupling_evolve(coupling *c, const double (*U)[3], const double (*grad_p)[3
     evaluate_forces(c, U, grad_p);                     /* 1 */
     double t1 = now();
     c->coupling_seconds += t1 - t0;
+    double fw[3] = {0.0, 0.0, 0.0}, ff[3] = {0.0, 0.0, 0.0};
     for (int k = 0; k < c->interval; k++) {            /* 2 */
         apply_fluid_forces(c);   /* implicit: at the current velocity; explicit: frozen (beta 0) */
         system_step(&c->s);
+        for (int q = 0; q < 3; q++) fw[q] += c->s.wall_force[q];
+        add_fluid_force(c, ff);
+    }
+    for (int q = 0; q < 3; q++) {
+        c->wall_force[q] = fw[q] / c->interval;
+        c->fluid_force[q] = ff[q] / c->interval;
     }
     system_check_health(&c->s);
     double t2 = now();

@@ -413,14 +413,24 @@ void contact_state_free(contact_state *cs)
     memset(cs, 0, sizeof *cs);
 }
 
-/* A 2-D dataset of doubles or int64 with `cols` columns. */
+/* A 2-D dataset of doubles or int64 with `cols` columns, compressed (deflate, level 1): the
+ * contact history is mostly zeros (a particle touches few of the walls), which would otherwise
+ * double the size of a snapshot. */
 static void write_matrix(hid_t group, const char *name, hid_t file_type, hid_t mem_type,
                          const void *data, int64_t rows, int64_t cols, const char *path)
 {
     hsize_t dims[2] = {(hsize_t)rows, (hsize_t)cols};
     hid_t space = chk(H5Screate_simple(2, dims, NULL), path, "cannot create dataspace");
-    hid_t dset = chk(H5Dcreate2(group, name, file_type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+    hid_t dcpl = chk(H5Pcreate(H5P_DATASET_CREATE), path, "cannot create a dataset property list");
+    if (rows > 0 && cols > 0 && H5Zfilter_avail(H5Z_FILTER_DEFLATE) > 0) {
+        hsize_t chunk[2] = {(hsize_t)(rows < 65536 ? rows : 65536), (hsize_t)cols};
+        chk(H5Pset_chunk(dcpl, 2, chunk), path, "cannot set the chunk size");
+        chk(H5Pset_shuffle(dcpl), path, "cannot set the shuffle filter");
+        chk(H5Pset_deflate(dcpl, 1), path, "cannot set the deflate filter");
+    }
+    hid_t dset = chk(H5Dcreate2(group, name, file_type, space, H5P_DEFAULT, dcpl, H5P_DEFAULT),
                      path, "cannot create dataset");
+    H5Pclose(dcpl);
     if (rows > 0 && cols > 0)
         chk(H5Dwrite(dset, mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), path, "cannot write dataset");
     H5Dclose(dset);

@@ -94,6 +94,7 @@ static ALWAYS_INLINE void wall_loop(dem_system *s, const enum normal_model norma
     const double dt = s->dt, v_char = s->models.characteristic_velocity, fn_floor = s->models.fn_floor;
     const int torsion_torque = s->models.torsion_torque;
     double max_overlap = 0.0;
+    double fw[3] = {0.0, 0.0, 0.0};   /* the walls' total force on the particles */
     for (int k = 0; k < s->nwalls; k++) {
         const wall *wl = &s->walls[k];
         const int *cand = s->wall_candidates[k];
@@ -155,9 +156,11 @@ static ALWAYS_INLINE void wall_loop(dem_system *s, const enum normal_model norma
                     for (int q = 0; q < 3; q++) vi[q] -= 2.0 * v_plane * en[q];
             }
             p->f[i][0] += fc[0]; p->f[i][1] += fc[1]; p->f[i][2] += fc[2];
+            fw[0] += fc[0]; fw[1] += fc[1]; fw[2] += fc[2];
         }
     }
     s->max_overlap_seen = fmax(s->max_overlap_seen, max_overlap);
+    s->wall_force[0] = fw[0]; s->wall_force[1] = fw[1]; s->wall_force[2] = fw[2];
 }
 
 #define WALL_KERNEL(N, T, R, C, S) \

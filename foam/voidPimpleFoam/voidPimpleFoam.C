@@ -98,6 +98,7 @@ Description
 #include "fixedFluxPressureFvPatchScalarField.H"
 
 #include "demCoupling.H"
+#include "fluxReconstruction.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -122,6 +123,9 @@ int main(int argc, char *argv[])
     #include "createControl.H"
     #include "createFields.H"
     #include "initContinuityErrs.H"
+
+    // U from the superficial face fluxes (the face form), with the mesh's tensor inverted once
+    const fluxReconstruction reconstruction(mesh);
 
     // --- the coupling session: copies the mesh, reads demProperties and couplingProperties
     demCoupling coupling(mesh, rhoFluid.value(), nuFluid, runTime.deltaTValue(), runTime.value());

@@ -46,7 +46,10 @@ Checks, per run (one CHECK line each; exit 1 on a FAIL):
                     the freeboard), <U_z> the layer's mean over the cross-section (blockMesh
                     numbers the cells layer by layer); continuity makes it 0 (the cell-centred
                     drag leaves an odd-even pattern there; the solver's faceMomentum removes
-                    it), 1 %.
+                    it), 1 %;
+  <run>_momentum:   the largest relative residual of the gas momentum balance over every fluid
+                    step (postProcessing/momentumBalance.dat: |residual| / max(|pressure drop x
+                    area|, |particles' force|)), 1 %.
 Usage: postProcess.py <run directory>...
 """
 import os
@@ -62,7 +65,7 @@ import numpy as np
 SLAB = (0.2, 0.8)          # the bed's bulk, as fractions of its height
 BRANCH = (0.2, 0.75)       # packed-bed points, as fractions of U_mf,ref
 PLATEAU = 1.3              # fluidised points: U >= PLATEAU U_mf,ref
-TOL_BED, TOL_PLATEAU, TOL_UMF, TOL_FREE = 5.0, 3.0, 10.0, 1.0
+TOL_BED, TOL_PLATEAU, TOL_UMF, TOL_FREE, TOL_MOMENTUM, TOL_LAYER = 5.0, 3.0, 10.0, 1.0, 1.0, 2.0
 
 
 # --- case parameters ------------------------------------------------------------------------
@@ -201,6 +204,41 @@ def free_fluid_deviation(run, t_lo, t_hi):
     return tw, float(np.max(np.abs(uz[free] - u_in[2])) / np.linalg.norm(u_in)), int(free.sum())
 
 
+def layer_deviation(run, t_lo, t_hi, c, law):
+    """(time, max |dP/dz / law - 1| over the faces between two packed cell layers, their number,
+    and the worst face's height) at the last written time in [t_lo, t_hi]: the pressure gradient
+    between layer centres, rho_f (p_k - p_k+1)/dz - rho_f |g|, against the law's packed-bed
+    gradient with the two layers' mean voidage and the inlet's superficial velocity; None if no
+    fields were written then."""
+    times = []
+    for name in os.listdir(run):
+        try:
+            tw = float(name)
+        except ValueError:
+            continue
+        if t_lo <= tw <= t_hi and os.path.exists(os.path.join(run, name, "alpha")):
+            times.append((tw, name))
+    if not times:
+        return None
+    tw, name = max(times)
+    bm = read(os.path.join(run, "system/blockMeshDict"))
+    m = re.search(r"hex\s*\([^)]*\)\s*\(\s*(\d+)\s+(\d+)\s+(\d+)\s*\)", bm)
+    per_layer, nz = int(m.group(1)) * int(m.group(2)), int(m.group(3))
+    alpha = internal_field(os.path.join(run, name, "alpha")).reshape(-1, per_layer).mean(axis=1)
+    p = internal_field(os.path.join(run, name, "p")).reshape(-1, per_layer).mean(axis=1)
+    with open(os.path.join(run, name, "U")) as f:
+        text = f.read()
+    inlet = re.search(r"inlet\s*\{[^}]*?value\s+uniform\s+\(\s*" + NUM + r"\s+" + NUM + r"\s+" + NUM, text)
+    u_in = float(inlet.group(3))
+    dz = c["height"] / nz
+    grad = c["rho_f"] * (p[:-1] - p[1:]) / dz - c["rho_f"] * c["g"]
+    e_f = 0.5 * (alpha[:-1] + alpha[1:])
+    packed = (alpha[:-1] < 0.7) & (alpha[1:] < 0.7)
+    dev = np.abs(grad[packed] / law(u_in, e_f[packed], c) - 1.0)
+    k = int(np.argmax(dev))
+    return tw, float(dev[k]), int(packed.sum()), float((np.flatnonzero(packed)[k] + 1) * dz)
+
+
 def cap(r, h):
     """Volume of a sphere of radius r below a plane at height h above its bottom."""
     h = np.clip(h, 0.0, 2.0 * r)
@@ -319,6 +357,30 @@ def analyse(run):
         failed += not ok
         print(f"CHECK {name}_free_fluid measured={dev_free:.6g} reference=0 error={100 * dev_free:.3f} "
               f"tolerance={TOL_FREE:g} {'PASS' if ok else 'FAIL'}")
+
+    # layer by layer in the packed bed: the pressure gradient between two packed cell layers
+    # against the law with their voidage (the face form keeps the bed's end layers too)
+    lay = layer_deviation(run, t[sel][0], t[sel][-1], c, law)
+    if lay is None:
+        print(f"CHECK {name}_layers measured=nan reference=0 error=nan tolerance={TOL_LAYER:g} FAIL "
+              f"(no fields written between {t[sel][0]:.3f} and {t[sel][-1]:.3f} s)")
+        failed += 1
+    else:
+        tw, dev_l, nl, zl = lay
+        ok = 100 * dev_l <= TOL_LAYER
+        failed += not ok
+        print(f"CHECK {name}_layers measured={dev_l:.6g} reference=0 error={100 * dev_l:.3f} "
+              f"tolerance={TOL_LAYER:g} {'PASS' if ok else 'FAIL'} (t = {tw:g} s, {nl} faces, worst at z = {1e3 * zl:.2f} mm)")
+
+    # the gas momentum balance at every fluid step (the solver's postProcessing/momentumBalance.dat:
+    # |residual| / max(|pressure|, |particles|)): the pressure drop is the particles' force plus the
+    # gas's weight and acceleration
+    mb = np.loadtxt(os.path.join(run, "postProcessing", "momentumBalance.dat"), comments="#", ndmin=2)
+    worst = float(np.abs(mb[:, 8]).max())
+    ok = 100 * worst <= TOL_MOMENTUM
+    failed += not ok
+    print(f"CHECK {name}_momentum measured={worst:.6g} reference=0 error={100 * worst:.3f} "
+          f"tolerance={TOL_MOMENTUM:g} {'PASS' if ok else 'FAIL'}")
 
     # information
     mu = c["rho_f"] * c["nu"]

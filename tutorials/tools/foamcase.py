@@ -1,0 +1,230 @@
+"""Reading a coupled case's output for the tutorials' checks and pictures (numpy, h5py).
+
+- dictionaries: strip_comments, read_dict, scalar, vector, sub_dict (a regex reader of the
+  simple OpenFOAM-syntax entries the tutorials use; not a general parser);
+- time series: surface_field_value (postProcessing/<name>/<start time>/surfaceFieldValue.dat of
+  every start time, so that a run continued from a write time reads as one series),
+  table (postProcessing/momentumBalance.dat, particles.dat);
+- fields: internal_field (the internal values of an ASCII volField), time_dirs;
+- particles: snapshots (particles.h5: time, position, velocity per snapshot, by id order).
+"""
+import os
+import re
+
+import h5py
+import numpy as np
+
+NUM = r"([-+0-9.eE]+)"
+
+
+def strip_comments(text):
+    text = re.sub(r"/\*.*?\*/", "", text, flags=re.S)
+    return re.sub(r"//[^\n]*", "", text)
+
+
+def read_dict(path):
+    with open(path) as f:
+        return strip_comments(f.read())
+
+
+def scalar(text, key):
+    m = re.search(r"(?:^|[\s{;])" + key + r"\s+" + NUM + r"\s*;", text)
+    if not m:
+        raise SystemExit(f"foamcase: no '{key}' found")
+    return float(m.group(1))
+
+
+def vector(text, key):
+    m = re.search(key + r"\s*\(\s*" + NUM + r"\s+" + NUM + r"\s+" + NUM + r"\s*\)", text)
+    if not m:
+        raise SystemExit(f"foamcase: no vector '{key}' found")
+    return np.array([float(m.group(k)) for k in (1, 2, 3)])
+
+
+def sub_dict(text, name):
+    """The body of the first 'name { ... }' (one level of nested braces allowed)."""
+    m = re.search(r"(?:^|[\s;{])" + re.escape(name) + r"\s*\{((?:[^{}]|\{[^{}]*\})*)\}", text)
+    if not m:
+        raise SystemExit(f"foamcase: no sub-dictionary '{name}' found")
+    return m.group(1)
+
+
+def time_dirs(case):
+    """[(time, name)] of the case's time directories, sorted."""
+    out = []
+    for name in os.listdir(case):
+        try:
+            out.append((float(name), name))
+        except ValueError:
+            pass
+    return sorted(out)
+
+
+def _start_dirs(base):
+    starts = []
+    if os.path.isdir(base):
+        for name in os.listdir(base):
+            try:
+                starts.append((float(name), name))
+            except ValueError:
+                pass
+    return sorted(starts)
+
+
+def surface_field_value(case, name, ncols=None):
+    """time and the columns of postProcessing/<name>/<start>/surfaceFieldValue.dat over all start
+    times (a later start replaces the rows from its start on); vectors split into components."""
+    base = os.path.join(case, "postProcessing", name)
+    rows = []
+    for start, sname in _start_dirs(base):
+        path = os.path.join(base, sname, "surfaceFieldValue.dat")
+        if not os.path.exists(path):
+            continue
+        rows = [r for r in rows if r[0] < start - 1e-12]
+        with open(path) as f:
+            for line in f:
+                if line.startswith("#") or not line.strip():
+                    continue
+                rows.append([float(x) for x in line.replace("(", " ").replace(")", " ").split()])
+    if not rows:
+        raise SystemExit(f"foamcase: no {base}/<time>/surfaceFieldValue.dat")
+    a = np.array(rows)
+    return a if ncols is None else a[:, :ncols]
+
+
+def table(path):
+    """A whitespace table with '#' comments, as an array (rows, columns)."""
+    if not os.path.exists(path):
+        raise SystemExit(f"foamcase: no {path}")
+    return np.loadtxt(path, comments="#", ndmin=2)
+
+
+def internal_field(path):
+    """The internal field of an ASCII OpenFOAM volField: (n,) or (n, 3); a uniform field as a
+    scalar or vector value."""
+    with open(path) as f:
+        text = f.read()
+    i = text.index("internalField")
+    head = text[i:text.index("\n", i)]
+    if "nonuniform" not in head:
+        vals = re.findall(NUM, head.split("uniform", 1)[1])
+        return np.array([float(v) for v in vals]) if len(vals) > 1 else float(vals[0])
+    body = text[text.index("(", i) + 1:]
+    if "List<vector>" in head:
+        vals = re.findall(r"\(([^()]*)\)", body[:body.index("\n)")])
+        return np.array([[float(x) for x in v.split()] for v in vals])
+    return np.array(body[:body.index(")")].split(), dtype=float)
+
+
+def block_cells(case):
+    """(nx, ny, nz) of the single hex block of system/blockMeshDict (cells numbered x fastest)."""
+    bm = read_dict(os.path.join(case, "system/blockMeshDict"))
+    m = re.search(r"hex\s*\([^)]*\)\s*\(\s*(\d+)\s+(\d+)\s+(\d+)\s*\)", bm)
+    return tuple(int(m.group(k)) for k in (1, 2, 3))
+
+
+def snapshots(case, every=1):
+    """Yield (time, position (n,3), velocity (n,3)) of the complete snapshots of particles.h5 in
+    time order, particles sorted by id; every: only every k-th snapshot."""
+    with h5py.File(os.path.join(case, "particles.h5"), "r") as h:
+        groups = [g for g in h["snapshots"].values() if g.attrs.get("complete", 0)]
+        groups.sort(key=lambda g: g.attrs["time"])
+        for k, g in enumerate(groups):
+            if k % every:
+                continue
+            order = np.argsort(g["id"][:])
+            yield float(g.attrs["time"]), g["position"][:][order], g["velocity"][:][order]
+
+
+def snapshot_times(case):
+    with h5py.File(os.path.join(case, "particles.h5"), "r") as h:
+        return sorted(float(g.attrs["time"]) for g in h["snapshots"].values() if g.attrs.get("complete", 0))
+
+
+# --- the fluidised-bed measures shared by the bed tutorials ----------------------------------
+class Checks:
+    """CHECK lines (measured, reference, error, tolerance, PASS/FAIL); failed is set on a FAIL."""
+
+    def __init__(self):
+        self.failed = False
+
+    def relative(self, name, measured, reference, tolerance_percent):
+        err = 100.0 * abs(measured / reference - 1.0)
+        ok = err <= tolerance_percent
+        self.failed |= not ok
+        print(f"CHECK {name} measured={measured:.6g} reference={reference:.6g} error={err:.3f} "
+              f"tolerance={tolerance_percent} {'PASS' if ok else 'FAIL'}")
+
+    def at_most(self, name, measured, limit):
+        ok = measured <= limit
+        self.failed |= not ok
+        print(f"CHECK {name} measured={measured:.6g} limit={limit:g} {'PASS' if ok else 'FAIL'}")
+
+    def within(self, name, measured, lo, hi):
+        ok = lo <= measured <= hi
+        self.failed |= not ok
+        print(f"CHECK {name} measured={measured:.6g} range=[{lo:g}, {hi:g}] {'PASS' if ok else 'FAIL'}")
+
+
+def case_bed(case, material):
+    """The bed's parameters from constant/: rho_f, rho_p (of `material`), |g|, the domain's
+    cross-section A and height H, the particle volume V_p and count N (first snapshot)."""
+    tp = read_dict(os.path.join(case, "constant/transportProperties"))
+    dem = read_dict(os.path.join(case, "constant/demProperties"))
+    dom = sub_dict(dem, "domain")
+    lo, hi = vector(dom, "min"), vector(dom, "max")
+    with h5py.File(os.path.join(case, "particles.h5"), "r") as h:
+        first = min(h["snapshots"].values(), key=lambda g: g.attrs["time"])
+        r = first["radius"][:]
+    return {
+        "rho_f": scalar(tp, "rho"), "nu": scalar(tp, "nu"),
+        "rho_p": scalar(sub_dict(sub_dict(dem, "materials"), material), "density"),
+        "g": float(np.linalg.norm(vector(dem, "gravity"))),
+        "lo": lo, "hi": hi, "area": (hi[0] - lo[0]) * (hi[1] - lo[1]), "height": hi[2] - lo[2],
+        "v_p": float(np.sum(4.0 / 3.0 * np.pi * r ** 3)), "n": len(r),
+    }
+
+
+def bed_pressure_drop(case, bed):
+    """t, dP = rho_f (p_inlet - p_outlet) - rho_f |g| H [Pa] every fluid step (p keeps the
+    hydrostatic part of the gas column); the function objects pInlet and pOutlet."""
+    pin = surface_field_value(case, "pInlet", 2)
+    pout = surface_field_value(case, "pOutlet", 2)
+    m = min(len(pin), len(pout))
+    return pin[:m, 0], bed["rho_f"] * (pin[:m, 1] - pout[:m, 1]) - bed["rho_f"] * bed["g"] * bed["height"]
+
+
+def bed_momentum_change(case, bed, t0, t1):
+    """M (<v_z>(t1) - <v_z>(t0)) / (A (t1 - t0)) [Pa]: the bed's momentum change per area and
+    time (postProcessing/particles.dat's mean particle velocity), and the two velocities."""
+    pm = table(os.path.join(case, "postProcessing/particles.dat"))
+    vz = np.interp([t0, t1], pm[:, 0], pm[:, 7])
+    mass = bed["v_p"] * bed["rho_p"]
+    return mass * (vz[1] - vz[0]) / (bed["area"] * (t1 - t0)), vz
+
+
+def momentum_residual(case):
+    """(time, |residual| / max(|pressure|, |particles|)) of postProcessing/momentumBalance.dat."""
+    mb = table(os.path.join(case, "postProcessing/momentumBalance.dat"))
+    return mb[:, 0], np.abs(mb[:, 8])
+
+
+def particle_balance(case, bed, t0):
+    """The particles' momentum balance along z over t >= t0, from postProcessing/particles.dat
+    (the fluid's and the walls' force on the particles, means over each fluid step) [N]:
+    fluid, walls, weight M |g|, M d<v_z>/dt over the window, and the residual
+    fluid + walls - weight - M d<v_z>/dt; and `given`, the mean force the fluid received from
+    them (with the sign of `fluid`: equal to it when the exchange conserves momentum)."""
+    pm = table(os.path.join(case, "postProcessing/particles.dat"))
+    w = pm[:, 0] >= t0
+    mass = bed["v_p"] * bed["rho_p"]
+    t, vz = pm[w, 0], pm[w, 7]
+    fluid, walls = pm[w, 13].mean(), pm[w, 10].mean()
+    # what the fluid received (momentumBalance.dat's 'particles' is the particles' force on the
+    # fluid, at the end of each fluid step; particles.dat's first row is the start)
+    mb = table(os.path.join(case, "postProcessing/momentumBalance.dat"))
+    given = -mb[mb[:, 0] >= t0, 3].mean()
+    accel = mass * (vz[-1] - vz[0]) / (t[-1] - t[0])
+    weight = mass * bed["g"]
+    return {"fluid": fluid, "walls": walls, "weight": weight, "accel": accel,
+            "residual": fluid + walls - weight - accel, "given": given}
