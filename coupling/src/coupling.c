@@ -36,7 +36,11 @@ struct coupling {
     cpl_mesh mesh;
     cpl_voidfraction vf;
     enum cpl_interp_scheme interp_scheme;
-    cpl_interp interp_u, interp_gp;
+    cpl_interp interp;             /* U and grad p as one 6-component field: one search per particle */
+    double (*ugp)[6];              /* [ncells] U, grad p for the interpolation; [np] at the particles */
+    double (*ugp_p)[6];
+    cpl_interp_tet *tets;          /* cellPoint: each particle's tetrahedron (current order) */
+    int tets_valid, field_set;
     cpl_force_params params;
     cpl_fluid_forces forces;
     int interval;
@@ -114,6 +118,9 @@ static void grow_particles(coupling *c, int n)
     c->alpha_p = dem_realloc(c->alpha_p, (size_t)c->np_cap * sizeof *c->alpha_p);
     c->u_p = dem_realloc(c->u_p, (size_t)c->np_cap * sizeof *c->u_p);
     c->gp_p = dem_realloc(c->gp_p, (size_t)c->np_cap * sizeof *c->gp_p);
+    if (c->interp_scheme != CPL_INTERP_CELL) c->ugp_p = dem_realloc(c->ugp_p, (size_t)c->np_cap * sizeof *c->ugp_p);
+    if (c->interp_scheme == CPL_INTERP_CELL_POINT) c->tets = dem_realloc(c->tets, (size_t)c->np_cap * sizeof *c->tets);
+    c->tets_valid = 0;
 }
 
 static void grow_ids(coupling *c)
@@ -157,8 +164,13 @@ static void update_void_fraction(coupling *c)
     for (int i = 0; i < p->n; i++) c->cell_of_id[p->id[i]] = c->cell[i];
 }
 
-/* Fluid quantities at the particles and their forces, for the current weights and velocities. */
-static void evaluate_forces(coupling *c, const double (*U)[3], const double (*grad_p)[3])
+/* Fluid quantities at the particles and their forces, for the current weights and velocities.
+ * new_field: U, grad p changed since the last call (else the interpolation's field is kept);
+ * new_positions: the particles moved (else cellPoint keeps each particle's tetrahedron). The
+ * exchange evaluates twice per fluid step: a new field at unmoved particles, then moved
+ * particles in the same field. */
+static void evaluate_forces(coupling *c, const double (*U)[3], const double (*grad_p)[3], int new_field,
+                            int new_positions)
 {
     particles *p = &c->s.p;
     const cpl_cell_weights w = weights_of(c);
@@ -167,10 +179,22 @@ static void evaluate_forces(coupling *c, const double (*U)[3], const double (*gr
         cpl_gather_vector(&w, U, c->u_p);
         cpl_gather_vector(&w, grad_p, c->gp_p);
     } else {
-        cpl_interp_set_field(&c->interp_u, &c->mesh, &U[0][0]);
-        cpl_interp_set_field(&c->interp_gp, &c->mesh, &grad_p[0][0]);
-        cpl_interp_particles(&c->interp_u, &c->mesh, p->n, c->cell, (const double (*)[3])p->x, &c->u_p[0][0]);
-        cpl_interp_particles(&c->interp_gp, &c->mesh, p->n, c->cell, (const double (*)[3])p->x, &c->gp_p[0][0]);
+        if (new_field || !c->field_set) {
+            for (int k = 0; k < c->mesh.ncells; k++)
+                for (int q = 0; q < 3; q++) { c->ugp[k][q] = U[k][q]; c->ugp[k][3 + q] = grad_p[k][q]; }
+            cpl_interp_set_field(&c->interp, &c->mesh, &c->ugp[0][0]);
+            c->field_set = 1;
+        }
+        if (c->interp_scheme == CPL_INTERP_CELL_POINT) {
+            if (new_positions || !c->tets_valid)
+                cpl_interp_locate(&c->interp, &c->mesh, p->n, c->cell, (const double (*)[3])p->x, c->tets);
+            c->tets_valid = 1;
+            cpl_interp_apply(&c->interp, &c->mesh, p->n, c->tets, &c->ugp_p[0][0]);
+        } else {
+            cpl_interp_particles(&c->interp, &c->mesh, p->n, c->cell, (const double (*)[3])p->x, &c->ugp_p[0][0]);
+        }
+        for (int i = 0; i < p->n; i++)
+            for (int q = 0; q < 3; q++) { c->u_p[i][q] = c->ugp_p[i][q]; c->gp_p[i][q] = c->ugp_p[i][3 + q]; }
     }
     for (int i = 0; i < p->n; i++) {
         c->d[i] = 2.0 * p->radius[i];
@@ -330,8 +354,8 @@ coupling *coupling_create(const char *case_dir, cpl_mesh *mesh, double rho_f, do
     if (cpl_vf_init(&c->vf, &c->mesh, vf_model, alpha_min) != 0) dem_fatal("coupling: void fraction setup failed");
     if (vf_model == CPL_VF_GAUSSIAN) { c->vf.kernel_width = kernel_width; c->vf.kernel_cutoff = kernel_cutoff; }
     if (c->interp_scheme != CPL_INTERP_CELL &&
-        (cpl_interp_init(&c->interp_u, &c->mesh, c->interp_scheme, 3) != 0 ||
-         cpl_interp_init(&c->interp_gp, &c->mesh, c->interp_scheme, 3) != 0))
+        (cpl_interp_init(&c->interp, &c->mesh, c->interp_scheme, 6) != 0 ||
+         !(c->ugp = calloc((size_t)c->mesh.ncells, sizeof *c->ugp))))
         dem_fatal("coupling: interpolation setup failed");
     cpl_fluid_forces_init(&c->forces);
 
@@ -361,7 +385,7 @@ coupling *coupling_create(const char *case_dir, cpl_mesh *mesh, double rho_f, do
 void coupling_evolve(coupling *c, const double (*U)[3], const double (*grad_p)[3])
 {
     double t0 = now();
-    evaluate_forces(c, U, grad_p);                     /* 1 */
+    evaluate_forces(c, U, grad_p, 1, 0);               /* 1 */
     double t1 = now();
     c->coupling_seconds += t1 - t0;
     double fw[3] = {0.0, 0.0, 0.0}, ff[3] = {0.0, 0.0, 0.0};
@@ -379,7 +403,7 @@ void coupling_evolve(coupling *c, const double (*U)[3], const double (*grad_p)[3
     double t2 = now();
     c->dem_seconds += t2 - t1;
     update_void_fraction(c);                            /* 3 */
-    evaluate_forces(c, U, grad_p);
+    evaluate_forces(c, U, grad_p, 0, 1);
     const cpl_cell_weights w = weights_of(c);
     cpl_exchange_cells(&w, &c->forces, (const double (*)[3])c->s.p.v, c->mesh.ncells, c->mesh.cell_volume,
                        c->ksl, c->up, c->source);
@@ -432,7 +456,8 @@ void coupling_free(coupling *c)
     io_close_writer(c->writer);
     if (c->means) fclose(c->means);
     cpl_fluid_forces_free(&c->forces);
-    if (c->interp_scheme != CPL_INTERP_CELL) { cpl_interp_free(&c->interp_u); cpl_interp_free(&c->interp_gp); }
+    if (c->interp_scheme != CPL_INTERP_CELL) cpl_interp_free(&c->interp);
+    free(c->ugp); free(c->ugp_p); free(c->tets);
     cpl_vf_free(&c->vf);
     cpl_mesh_free(&c->mesh);
     system_free(&c->s);

@@ -22,7 +22,8 @@ int cpl_interp_scheme_parse(const char *name, enum cpl_interp_scheme *scheme)
 void cpl_interp_free(cpl_interp *ip)
 {
     free(ip->minv); free(ip->field); free(ip->grad);
-    free(ip->pc_start); free(ip->pc_cell); free(ip->pc_w); free(ip->point_value);
+    free(ip->pc_start); free(ip->pc_cell); free(ip->pc_w); free(ip->point_value); free(ip->face_value);
+    free(ip->pyramid_inv);
     memset(ip, 0, sizeof *ip);
 }
 
@@ -96,13 +97,22 @@ static int point_cells(cpl_interp *ip, const cpl_mesh *m, int ncomp)
             ip->pc_cell = malloc((size_t)(count[np] ? count[np] : 1) * sizeof(int));
             ip->pc_w = malloc((size_t)(count[np] ? count[np] : 1) * sizeof(double));
             ip->point_value = calloc((size_t)(np ? np : 1) * ncomp, sizeof(double));
-            if (!ip->pc_start || !ip->pc_cell || !ip->pc_w || !ip->point_value) {
+            ip->face_value = calloc((size_t)(m->nfaces ? m->nfaces : 1) * ncomp, sizeof(double));
+            if (!ip->pc_start || !ip->pc_cell || !ip->pc_w || !ip->point_value || !ip->face_value) {
                 free(count); free(last); fprintf(stderr, "interpolation: out of memory\n"); return -1;
             }
             memcpy(ip->pc_start, count, ((size_t)np + 1) * sizeof(int));
         }
     }
     free(count); free(last);
+    /* 1 / ((x_f - x_c).A_f) of each cell's faces (cell_faces order), for the pyramid choice */
+    ip->pyramid_inv = malloc((size_t)(m->cell_face_start[m->ncells] ? m->cell_face_start[m->ncells] : 1) * sizeof(double));
+    if (!ip->pyramid_inv) { fprintf(stderr, "interpolation: out of memory\n"); return -1; }
+    for (int c = 0; c < m->ncells; c++)
+        for (int k = m->cell_face_start[c]; k < m->cell_face_start[c + 1]; k++) {
+            const double *a = m->face_area[m->cell_faces[k]], *xf = m->face_centre[m->cell_faces[k]], *xc = m->cell_centre[c];
+            ip->pyramid_inv[k] = 1.0 / ((xf[0] - xc[0]) * a[0] + (xf[1] - xc[1]) * a[1] + (xf[2] - xc[2]) * a[2]);
+        }
     for (int q = 0; q < np; q++) {
         double sum = 0.0;
         for (int k = ip->pc_start[q]; k < ip->pc_start[q + 1]; k++) {
@@ -137,34 +147,104 @@ static double barycentric(const double *a, const double *b, const double *c, con
     return fmin(fmin(l[0], l[1]), fmin(l[2], l[3]));
 }
 
+/* The tetrahedra of face f (cell centre, face centre, two consecutive points): the one holding
+ * x, or the one it is least outside of; updates best/bf/bp/lb, returns 1 when x is inside. */
+static int face_tets(const cpl_mesh *m, int c, int f, const double x[3], double *best, int *bf, int *bp, double lb[4])
+{
+    const int s = m->face_start[f], n = m->face_start[f + 1] - s;
+    for (int e = 0; e < n; e++) {
+        double l[4];
+        const double lo = barycentric(m->cell_centre[c], m->face_centre[f], m->points[m->face_points[s + e]],
+                                      m->points[m->face_points[s + (e + 1) % n]], x, l);
+        if (lo > *best) { *best = lo; *bf = f; *bp = e; memcpy(lb, l, 4 * sizeof *lb); }
+        if (lo >= 0.0) return 1;
+    }
+    return 0;
+}
+
+/* The tetrahedron of face f that should hold x: the face's triangle (face centre, two
+ * consecutive points) whose sector around the face centre holds y, where the ray from the cell
+ * centre through x meets the face's plane (y = x_c + (x - x_c)/t, t from cell_point_at); one
+ * barycentric evaluation. Returns 1 when x is inside it (else the caller searches). */
+static int sector_tet(const cpl_mesh *m, int c, int f, double t, const double x[3], double *best, int *bf,
+                      int *bp, double lb[4])
+{
+    if (!(t > 0.0)) return 0;
+    const double *xc = m->cell_centre[c], *cf = m->face_centre[f], *a = m->face_area[f];
+    const int s = m->face_start[f], n = m->face_start[f + 1] - s;
+    if (n > 64) return 0;
+    double y[3];
+    for (int i = 0; i < 3; i++) y[i] = xc[i] + (x[i] - xc[i]) / t - cf[i];
+    /* side[e] = A.((p_e - x_f) x y): y lies in the sector of edge e (from p_e to p_e+1) when it is
+     * on the positive side of p_e's spoke and not on the positive side of p_e+1's (the area
+     * vector follows the face's points by the right-hand rule, so A.(u_e x u_e+1) > 0 on a
+     * convex face; a non-convex one falls back to the search) */
+    double side[65];
+    for (int e = 0; e < n; e++) {
+        const double *pe = m->points[m->face_points[s + e]];
+        const double u[3] = {pe[0] - cf[0], pe[1] - cf[1], pe[2] - cf[2]};
+        side[e] = a[0] * (u[1] * y[2] - u[2] * y[1]) + a[1] * (u[2] * y[0] - u[0] * y[2]) +
+                  a[2] * (u[0] * y[1] - u[1] * y[0]);
+    }
+    side[n] = side[0];
+    for (int e = 0; e < n; e++) {
+        if (side[e] < 0.0 || side[e + 1] > 0.0) continue;
+        double l[4];
+        const double lo = barycentric(xc, cf, m->points[m->face_points[s + e]],
+                                      m->points[m->face_points[s + (e + 1) % n]], x, l);
+        if (lo > *best) { *best = lo; *bf = f; *bp = e; memcpy(lb, l, 4 * sizeof *lb); }
+        return lo >= 0.0;
+    }
+    return 0;
+}
+
 /* cellPoint at x in cell c: the tetrahedron holding x (or, if rounding puts x outside all of
- * them, the one it is least outside of). */
-static void cell_point_at(const cpl_interp *ip, const cpl_mesh *m, int c, const double x[3], double *out)
+ * them, the one it is least outside of). In a convex cell x lies in the pyramid (cell centre,
+ * face) of the face whose plane the ray from the centre through x reaches first, the largest
+ * (x - x_c).A_f / ((x_f - x_c).A_f); its tetrahedra are tried first, the others only if x is
+ * in none of them (a non-convex cell). */
+static void cell_point_locate(const cpl_interp *ip, const cpl_mesh *m, int c, const double x[3], cpl_interp_tet *t);
+
+static void cell_point_apply(const cpl_interp *ip, const cpl_mesh *m, const cpl_interp_tet *t, double *out)
 {
     const int nc = ip->ncomp;
-    double best = -INFINITY, lb[4] = {1, 0, 0, 0};
-    int bf = -1, bp = -1;
-    for (int k = m->cell_face_start[c]; k < m->cell_face_start[c + 1] && best < 0.0; k++) {
-        const int f = m->cell_faces[k], s = m->face_start[f], n = m->face_start[f + 1] - s;
-        for (int e = 0; e < n; e++) {
-            double l[4];
-            const double lo = barycentric(m->cell_centre[c], m->face_centre[f], m->points[m->face_points[s + e]],
-                                          m->points[m->face_points[s + (e + 1) % n]], x, l);
-            if (lo > best) { best = lo; bf = f; bp = e; memcpy(lb, l, sizeof lb); }
-            if (lo >= 0.0) break;
-        }
+    const double *u = ip->field + (size_t)t->cell * nc;
+    if (t->face < 0) { for (int j = 0; j < nc; j++) out[j] = u[j]; return; }
+    const int s = m->face_start[t->face], n = m->face_start[t->face + 1] - s;
+    const int pa = m->face_points[s + t->edge], pb = m->face_points[s + (t->edge + 1) % n];
+    const double *uf = ip->face_value + (size_t)t->face * nc;   /* the mean of the face's points */
+    const double *l = t->l;
+    for (int j = 0; j < nc; j++)
+        out[j] = l[0] * u[j] + l[1] * uf[j] + l[2] * ip->point_value[(size_t)pa * nc + j] +
+                 l[3] * ip->point_value[(size_t)pb * nc + j];
+}
+
+static void cell_point_at(const cpl_interp *ip, const cpl_mesh *m, int c, const double x[3], double *out)
+{
+    cpl_interp_tet t;
+    cell_point_locate(ip, m, c, x, &t);
+    cell_point_apply(ip, m, &t, out);
+}
+
+static void cell_point_locate(const cpl_interp *ip, const cpl_mesh *m, int c, const double x[3], cpl_interp_tet *tet)
+{
+    const double *xc = m->cell_centre[c];
+    const double r[3] = {x[0] - xc[0], x[1] - xc[1], x[2] - xc[2]};
+    double best = -INFINITY, lb[4] = {1, 0, 0, 0}, t_max = -INFINITY;
+    int bf = -1, bp = -1, first = -1;
+    for (int k = m->cell_face_start[c]; k < m->cell_face_start[c + 1]; k++) {
+        const double *a = m->face_area[m->cell_faces[k]];
+        const double t = (r[0] * a[0] + r[1] * a[1] + r[2] * a[2]) * ip->pyramid_inv[k];
+        if (t > t_max) { t_max = t; first = m->cell_faces[k]; }
     }
-    const double *u = ip->field + (size_t)c * nc;
-    if (bf < 0) { for (int j = 0; j < nc; j++) out[j] = u[j]; return; }
-    const int s = m->face_start[bf], n = m->face_start[bf + 1] - s;
-    const int pa = m->face_points[s + bp], pb = m->face_points[s + (bp + 1) % n];
-    for (int j = 0; j < nc; j++) {
-        double uf = 0.0;   /* face centre: the mean of its points */
-        for (int e = 0; e < n; e++) uf += ip->point_value[(size_t)m->face_points[s + e] * nc + j];
-        uf /= n;
-        out[j] = lb[0] * u[j] + lb[1] * uf + lb[2] * ip->point_value[(size_t)pa * nc + j] +
-                 lb[3] * ip->point_value[(size_t)pb * nc + j];
-    }
+    if (first < 0 || !sector_tet(m, c, first, t_max, x, &best, &bf, &bp, lb))
+        if (first < 0 || !face_tets(m, c, first, x, &best, &bf, &bp, lb))
+        for (int k = m->cell_face_start[c]; k < m->cell_face_start[c + 1]; k++)
+            if (m->cell_faces[k] != first && face_tets(m, c, m->cell_faces[k], x, &best, &bf, &bp, lb)) break;
+    tet->cell = c;
+    tet->face = bf;
+    tet->edge = bp;
+    memcpy(tet->l, lb, sizeof lb);
 }
 
 int cpl_interp_init(cpl_interp *ip, const cpl_mesh *m, enum cpl_interp_scheme scheme, int ncomp)
@@ -212,6 +292,14 @@ void cpl_interp_set_field(cpl_interp *ip, const cpl_mesh *m, const double *field
                     v += ip->pc_w[k] * field[(size_t)ip->pc_cell[k] * nc + j];
                 ip->point_value[(size_t)q * nc + j] = v;
             }
+        for (int f = 0; f < m->nfaces; f++) {   /* face centres: the mean of their points */
+            const int s = m->face_start[f], n = m->face_start[f + 1] - s;
+            for (int j = 0; j < nc; j++) {
+                double v = 0.0;
+                for (int e = 0; e < n; e++) v += ip->point_value[(size_t)m->face_points[s + e] * nc + j];
+                ip->face_value[(size_t)f * nc + j] = v / n;
+            }
+        }
         return;
     }
     if (ip->scheme != CPL_INTERP_LINEAR) return;
@@ -263,4 +351,25 @@ int cpl_interp_particles(const cpl_interp *ip, const cpl_mesh *m, int np, const 
     int outside = 0;
     for (int i = 0; i < np; i++) outside += cpl_interp_at(ip, m, cell[i], x[i], out + (size_t)i * ip->ncomp) != 0;
     return outside;
+}
+
+int cpl_interp_locate(const cpl_interp *ip, const cpl_mesh *m, int np, const int *cell, const double (*x)[3],
+                      cpl_interp_tet *tets)
+{
+    int outside = 0;
+    for (int i = 0; i < np; i++) {
+        if (cell[i] < 0 || cell[i] >= ip->ncells) { tets[i].cell = -1; outside++; continue; }
+        cell_point_locate(ip, m, cell[i], x[i], &tets[i]);
+    }
+    return outside;
+}
+
+void cpl_interp_apply(const cpl_interp *ip, const cpl_mesh *m, int np, const cpl_interp_tet *tets, double *out)
+{
+    const int nc = ip->ncomp;
+    for (int i = 0; i < np; i++) {
+        double *o = out + (size_t)i * nc;
+        if (tets[i].cell < 0) { for (int j = 0; j < nc; j++) o[j] = 0.0; continue; }
+        cell_point_apply(ip, m, &tets[i], o);
+    }
 }

@@ -38,6 +38,8 @@ typedef struct cpl_interp {
     int *pc_start, *pc_cell;    /* cellPoint: CSR point -> cells */
     double *pc_w;               /* cellPoint: inverse-distance weights, summing to 1 per point */
     double *point_value;        /* cellPoint: [npoints][ncomp] */
+    double *face_value;         /* cellPoint: [nfaces][ncomp], the mean of the face's points */
+    double *pyramid_inv;        /* cellPoint: 1/((x_f - x_c).A_f) per cell face (cell_faces order) */
 } cpl_interp;
 
 /* name: "cell", "cellLinear" or "cellPoint". Returns 0, or -1 with a message on stderr. */
@@ -57,6 +59,14 @@ int cpl_interp_at(const cpl_interp *ip, const cpl_mesh *m, int cell, const doubl
 /* The same for np particles: out[np][ncomp]; returns the number outside (cell < 0, out 0). */
 int cpl_interp_particles(const cpl_interp *ip, const cpl_mesh *m, int np, const int *cell,
                          const double (*x)[3], double *out);
+
+/* cellPoint in two halves, for fields that change while the particles stay (and the other way
+ * round): the tetrahedron and barycentric weights of each particle, then the value of the field
+ * last given to cpl_interp_set_field. tets[i].cell = -1 for a particle outside (value 0). */
+typedef struct cpl_interp_tet { int cell, face, edge; double l[4]; } cpl_interp_tet;
+int cpl_interp_locate(const cpl_interp *ip, const cpl_mesh *m, int np, const int *cell, const double (*x)[3],
+                      cpl_interp_tet *tets);
+void cpl_interp_apply(const cpl_interp *ip, const cpl_mesh *m, int np, const cpl_interp_tet *tets, double *out);
 
 #ifdef __cplusplus
 }
