@@ -19,16 +19,16 @@ Description
         laplacian(alpha_f c_f rAU_f, p) = ddt(alpha) + div(alpha_f phiHbyA)
       with c = 1 (model B) or alpha (model A).
 
-    momentum
-        ddt(alpha U) + div(alpha phi, U) - [ddt(alpha) + div(alpha phi)] U
+    momentum (conservative)
+        ddt(alpha U) + div(alpha phi, U)
       - div(alpha nu (grad(U) + dev2(T(grad(U)))))
       = - c grad(p)                         c = 1 (model B, default) or alpha (model A)
         + alpha g                           gravity as a body force on the fluid
         + Ksl/rho_f (Up - U)                drag, implicit: fvm::Sp(Ksl/rho_f, U) on the left,
                                             Ksl/rho_f Up as a source
         + fExplicit/rho_f                   other particle forces on the fluid
-      The bracket subtracts the continuity residual (zero when the pressure equation is
-      converged), as DPMFoam and CFDEM do; it keeps U bounded while alpha changes.
+      DPMFoam and CFDEM subtract U [ddt(alpha) + div(alpha phi)] (the continuity residual of the
+      lagged flux); that is a momentum source the pressure drop does not see, so it is not done.
       The explicit sources (Ksl Up + fExplicit)/rho_f and alpha g enter as face fluxes
       (phiForces, as DPMFoam's phicForces), so that pressure and body forces balance face by
       face and a fluid at rest stays at rest (with fixedFluxPressure on walls).
@@ -47,9 +47,10 @@ Description
       writes that balance every step), and a packed cell next to free fluid keeps its drag
       (the bed's ends keep their pressure drop, the free fluid has no odd-even pattern).
       The cell form (faceMomentum false, DPMFoam's) has the time derivative and the drag
-      in the cells and a momentum predictor; it also balances momentum, but a packed cell
-      next to free fluid gets about half its velocity (half a cell of pressure drop lost at
-      each end of a packed bed).
+      in the cells and a momentum predictor; conservative as the face form (no U x continuity
+      residual term, the explicit forces as rAU_f x face fluxes) it also balances momentum,
+      but a packed cell next to free fluid gets about half its velocity (half a cell of
+      pressure drop lost at each end of a packed bed).
 
     Since p keeps its hydrostatic part, the C side gets the full gradient
     rho_f fvc::grad(p) [Pa/m] and computes the particles' pressure-gradient (buoyancy) force

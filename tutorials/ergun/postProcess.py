@@ -47,7 +47,8 @@ Checks, per run (one CHECK line each; exit 1 on a FAIL):
                     numbers the cells layer by layer); continuity makes it 0 (the cell-centred
                     drag leaves an odd-even pattern there; the solver's faceMomentum removes
                     it), 1 %;
-  <run>_layers:     the last written time on the packed branch: the pressure of each cell layer
+  <run>_layers:     the last written time on the rising ramp below 0.9 U_mf,ref (the bed still
+                    packed): the pressure of each cell layer
                     through the bed against the profile that each layer's drag by the law (with
                     the layer's mean voidage; Gidaspow: Ergun below 0.8, Wen-Yu above) gives, from
                     the free layer below the bed up (a face between two layers carries half of
@@ -245,7 +246,8 @@ def layer_profile(run, t_lo, t_hi, c, law):
     bm = read(os.path.join(run, "system/blockMeshDict"))
     m = re.search(r"hex\s*\([^)]*\)\s*\(\s*(\d+)\s+(\d+)\s+(\d+)\s*\)", bm)
     per_layer, nz = int(m.group(1)) * int(m.group(2)), int(m.group(3))
-    alpha = internal_field(os.path.join(run, name, "alpha")).reshape(-1, per_layer).mean(axis=1)
+    alpha_c = internal_field(os.path.join(run, name, "alpha")).reshape(-1, per_layer)
+    alpha = alpha_c.mean(axis=1)
     p = c["rho_f"] * internal_field(os.path.join(run, name, "p")).reshape(-1, per_layer).mean(axis=1)
     with open(os.path.join(run, name, "U")) as f:
         text = f.read()
@@ -386,7 +388,8 @@ def analyse(run):
 
     # layer by layer in the packed bed: the pressure profile against each layer's drag by the law
     # with the layer's voidage (the face form keeps the drag of the bed's end layers too)
-    lay = layer_profile(run, t[sel][0], t[sel][-1], c, gidaspow if law is ergun else law)
+    packed = rising & (U >= BRANCH[0] * umf_ref) & (U <= 0.9 * umf_ref)
+    lay = layer_profile(run, t[packed][0], t[packed][-1], c, gidaspow if law is ergun else law)
     if lay is None:
         print(f"CHECK {name}_layers measured=nan reference=0 error=nan tolerance={TOL_LAYER:g} FAIL "
               f"(no fields written between {t[sel][0]:.3f} and {t[sel][-1]:.3f} s)")

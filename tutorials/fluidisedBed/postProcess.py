@@ -47,6 +47,7 @@ Pictures: <case>/fluidisedBed.png (dP(t); particles coloured by speed at six tim
 time-mean solid fraction map 1 - alphaMean, averaged over the depth x; the momentum balance's
 residual) and <case>/fluidisedBed.gif (the particles, every snapshot).
 Usage: postProcess.py <case> [t_stats]   (t_stats default 1 s)
+       postProcess.py --window <case> <t0> <t1>   the pressure statistics of a window only
 """
 import os
 import sys
@@ -67,7 +68,31 @@ FREQUENCY = (0.5, 5.0)
 PACKED = 0.6
 
 
+def window_statistics(case, bed, t0, t1):
+    """Mean, std (10 ms averages) and dominant frequency of dP over [t0, t1], and the number of
+    fluid steps; with the bed's momentum change taken out of the mean."""
+    t, dp = fc.bed_pressure_drop(case, bed)
+    w = (t >= t0 - 1e-12) & (t <= t1 + 1e-12)
+    dpw, dt = dp[w], np.median(np.diff(t[w]))
+    k = max(1, int(round(0.01 / dt)))
+    dp_lp = np.convolve(dpw, np.ones(k) / k, mode="valid")
+    spec = np.abs(np.fft.rfft(dpw - dpw.mean())) ** 2
+    freq = np.fft.rfftfreq(len(dpw), dt)
+    band = freq > 0.2
+    dp_m, _ = fc.bed_momentum_change(case, bed, t[w][0], t[w][-1])
+    return dpw.mean() - dp_m, dp_lp.std(), freq[band][np.argmax(spec[band])], int(w.sum())
+
+
 def main():
+    if sys.argv[1] == "--window":      # postProcess.py --window <case> <t0> <t1>: statistics only
+        case, t0, t1 = sys.argv[2], float(sys.argv[3]), float(sys.argv[4])
+        bed = fc.case_bed(case, "beads")
+        w_a = bed["v_p"] * (bed["rho_p"] - bed["rho_f"]) * bed["g"] / bed["area"]
+        mean, std, f, n = window_statistics(case, bed, t0, t1)
+        print(f"WINDOW {case} {t0:g}-{t1:g} s: {n} fluid steps; mean dP (less the bed's momentum change) "
+              f"{mean:.1f} Pa ({100 * (mean / w_a - 1):+.2f} % from W/A {w_a:.1f} Pa), std {std:.1f} Pa "
+              f"({100 * std / w_a:.1f} %), dominant frequency {f:.2f} Hz")
+        return 0
     case = sys.argv[1]
     t_stats = float(sys.argv[2]) if len(sys.argv) > 2 else 1.0
     bed = fc.case_bed(case, "beads")
