@@ -76,34 +76,12 @@ PLATEAU = 1.3              # fluidised points: U >= PLATEAU U_mf,ref
 TOL_BED, TOL_PLATEAU, TOL_UMF, TOL_FREE, TOL_MOMENTUM, TOL_LAYER = 5.0, 3.0, 10.0, 1.0, 1.0, 2.0
 
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
+from foamcase import NUM, internal_field, scalar, vector  # noqa: E402
+from foamcase import read_dict as read  # noqa: E402
+
+
 # --- case parameters ------------------------------------------------------------------------
-def strip_comments(text):
-    text = re.sub(r"/\*.*?\*/", "", text, flags=re.S)
-    return re.sub(r"//[^\n]*", "", text)
-
-
-def read(path):
-    with open(path) as f:
-        return strip_comments(f.read())
-
-
-NUM = r"([-+0-9.eE]+)"
-
-
-def scalar(text, key):
-    m = re.search(r"(?:^|[\s{;])" + key + r"\s+" + NUM + r"\s*;", text)
-    if not m:
-        raise SystemExit(f"postProcess.py: no '{key}' found")
-    return float(m.group(1))
-
-
-def vector(text, key):
-    m = re.search(key + r"\s*\(\s*" + NUM + r"\s+" + NUM + r"\s+" + NUM + r"\s*\)", text)
-    if not m:
-        raise SystemExit(f"postProcess.py: no vector '{key}' found")
-    return np.array([float(m.group(k)) for k in (1, 2, 3)])
-
-
 def case_parameters(run):
     tp = read(os.path.join(run, "constant/transportProperties"))
     dem = read(os.path.join(run, "constant/demProperties"))
@@ -168,24 +146,8 @@ def surface_field_value(path):
     return a[:, 0], a[:, 1], a[:, 4]
 
 
-def internal_field(path):
-    """The internal field of an ASCII OpenFOAM volField: (n,) or (n, 3); None if uniform."""
-    with open(path) as f:
-        text = f.read()
-    i = text.index("internalField")
-    head = text[i:text.index("\n", i)]
-    if "nonuniform" not in head:
-        return None
-    body = text[text.index("(", i) + 1:]
-    if "List<vector>" in head:
-        vals = re.findall(r"\(([^()]*)\)", body[:body.index("\n)")])
-        return np.array([[float(x) for x in v.split()] for v in vals])
-    return np.array(body[:body.index(")")].split(), dtype=float)
-
-
-def free_fluid_deviation(run, t_lo, t_hi):
-    """(time, max |<U_z> - U_in| / U_in over the cell layers with alpha = 1, their number) at the
-    first written time in [t_lo, t_hi]; None if there is none."""
+def written_times(run, t_lo, t_hi):
+    """[(time, name)] of the time directories in [t_lo, t_hi] with fields written, sorted."""
     times = []
     for name in os.listdir(run):
         try:
@@ -194,9 +156,16 @@ def free_fluid_deviation(run, t_lo, t_hi):
             continue
         if t_lo <= tw <= t_hi and os.path.exists(os.path.join(run, name, "alpha")):
             times.append((tw, name))
+    return sorted(times)
+
+
+def free_fluid_deviation(run, t_lo, t_hi):
+    """(time, max |<U_z> - U_in| / U_in over the cell layers with alpha = 1, their number) at the
+    first written time in [t_lo, t_hi]; None if there is none."""
+    times = written_times(run, t_lo, t_hi)
     if not times:
         return None
-    tw, name = min(times)
+    tw, name = times[0]
     alpha = internal_field(os.path.join(run, name, "alpha"))
     U = internal_field(os.path.join(run, name, "U"))
     with open(os.path.join(run, name, "U")) as f:
@@ -232,17 +201,10 @@ def layer_profile(run, t_lo, t_hi, c, law):
     taken out), against the measured layer pressures. Returns (time, the largest deviation as a
     fraction of the bed's pressure drop, the number of bed layers, that layer's height), or None
     if no fields were written then."""
-    times = []
-    for name in os.listdir(run):
-        try:
-            tw = float(name)
-        except ValueError:
-            continue
-        if t_lo <= tw <= t_hi and os.path.exists(os.path.join(run, name, "alpha")):
-            times.append((tw, name))
+    times = written_times(run, t_lo, t_hi)
     if not times:
         return None
-    tw, name = max(times)
+    tw, name = times[-1]
     bm = read(os.path.join(run, "system/blockMeshDict"))
     m = re.search(r"hex\s*\([^)]*\)\s*\(\s*(\d+)\s+(\d+)\s+(\d+)\s*\)", bm)
     per_layer, nz = int(m.group(1)) * int(m.group(2)), int(m.group(3))
