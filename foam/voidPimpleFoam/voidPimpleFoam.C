@@ -167,6 +167,8 @@ int main(int argc, char *argv[])
 
     clockTime clock;
     scalar fluidTime = 0;
+    const scalar startTime = runTime.value();
+    scalar nextProgress = 30;
     label stepi = 0;
 
     while (runTime.run())
@@ -255,6 +257,17 @@ int main(int argc, char *argv[])
         }
 
         runTime.printExecutionTime(Info);
+
+        // progress of a long run, every 30 s of wall time: simulated time, share, time to go
+        if (wallClock.elapsedTime() > nextProgress)
+        {
+            const scalar done = (runTime.value() - startTime)/max(runTime.endTime().value() - startTime, SMALL);
+            const scalar spent = wallClock.elapsedTime();
+            Info<< "Progress: t = " << runTime.timeName() << " s of " << runTime.endTime().value()
+                << " s (" << label(100*done) << " %), " << label(spent) << " s wall so far, about "
+                << label(done > 0 ? spent*(1 - done)/done : 0) << " s to go" << nl << endl;
+            nextProgress = spent + 30;
+        }
     }
 
     {
