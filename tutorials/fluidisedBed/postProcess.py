@@ -188,9 +188,13 @@ def solid_fraction_map(case):
 
 def draw(case, snaps, t, dp, t_stats, w_a, mean, t_mb, rel, lo, hi):
     fig = plt.figure(figsize=(15, 9))
-    gs = fig.add_gridspec(2, 8, height_ratios=[1, 1.6])
+    gs = fig.add_gridspec(2, 9, height_ratios=[1, 1.6], width_ratios=[1] * 6 + [0.15, 1.1, 1.1])
     ax = fig.add_subplot(gs[0, :4])
-    ax.plot(t, dp, lw=0.3, color="tab:blue", label="dP = p_in - p_out - rho_f g H")
+    dt = np.median(np.diff(t))
+    k = max(1, int(round(0.01 / dt)))
+    ax.plot(t, dp, lw=0.2, color="0.8", label="dP = p_in - p_out - rho_f g H, every step")
+    ax.plot(t[k // 2: k // 2 + len(t) - k + 1], np.convolve(dp, np.ones(k) / k, mode="valid"), lw=0.6,
+            color="tab:blue", label="averaged over 10 ms")
     ax.axhline(w_a, color="k", ls="--", lw=1, label=f"W/A = {w_a:.0f} Pa")
     ax.axvline(t_stats, color="grey", ls=":", lw=1)
     ax.axhline(mean, color="tab:red", lw=1, label=f"mean from {t_stats:g} s: {mean:.0f} Pa")
@@ -198,7 +202,7 @@ def draw(case, snaps, t, dp, t_stats, w_a, mean, t_mb, rel, lo, hi):
     ax.set_ylabel("bed pressure drop [Pa]")
     ax.set_ylim(0, 2.0 * w_a)
     ax.legend(fontsize=8, loc="lower right")
-    ax = fig.add_subplot(gs[0, 4:])
+    ax = fig.add_subplot(gs[0, 5:])
     ax.semilogy(t_mb, np.maximum(rel, 1e-9), lw=0.3)
     ax.axhline(0.01, color="tab:red", ls="--", lw=1, label="1 %")
     ax.set_xlabel("t [s]")
@@ -213,10 +217,10 @@ def draw(case, snaps, t, dp, t_stats, w_a, mean, t_mb, rel, lo, hi):
         if k == 0:
             ax.set_ylabel("z [mm]")
         ax.set_xlabel("y [mm]", fontsize=8)
-    cb = fig.colorbar(sc, ax=fig.axes[2:2 + len(picks)], fraction=0.02, pad=0.01)
+    cb = fig.colorbar(sc, cax=fig.add_subplot(gs[1, 6]))
     cb.set_label("|v| [m/s]", fontsize=8)
     sf = solid_fraction_map(case)
-    ax = fig.add_subplot(gs[1, 6:])
+    ax = fig.add_subplot(gs[1, 7:])
     if sf is not None:
         tw, m = sf
         im = ax.imshow(m, origin="lower", extent=[lo[1] * 1e3, hi[1] * 1e3, lo[2] * 1e3, hi[2] * 1e3],
@@ -226,7 +230,7 @@ def draw(case, snaps, t, dp, t_stats, w_a, mean, t_mb, rel, lo, hi):
         ax.set_title(f"time-mean solid fraction\n({t_stats:g} - {tw:g} s)", fontsize=9)
     ax.set_xlabel("y [mm]", fontsize=8)
     fig.suptitle("fluidisedBed: DPMFoam's Goldschmidt bed in voidPimpleFoam + the project's DEM", fontsize=11)
-    fig.tight_layout()
+    fig.subplots_adjust(left=0.05, right=0.97, top=0.92, bottom=0.07, wspace=0.35, hspace=0.3)
     out = os.path.join(case, "fluidisedBed.png")
     fig.savefig(out, dpi=110)
     plt.close(fig)

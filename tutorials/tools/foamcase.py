@@ -216,6 +216,9 @@ def particle_balance(case, bed, t0):
     fluid + walls - weight - M d<v_z>/dt; and `given`, the mean force the fluid received from
     them (with the sign of `fluid`: equal to it when the exchange conserves momentum)."""
     pm = table(os.path.join(case, "postProcessing/particles.dat"))
+    if pm.shape[1] < 14:
+        raise SystemExit(f"foamcase: {case}/postProcessing/particles.dat has no force columns (written "
+                         "by an older solver); run the case again")
     w = pm[:, 0] >= t0
     mass = bed["v_p"] * bed["rho_p"]
     t, vz = pm[w, 0], pm[w, 7]
