@@ -315,6 +315,14 @@ static void setup_particles(coupling *c, const char *case_dir, double t_start)
     char base[4200];
     snprintf(base, sizeof base, "%s/particles", case_dir);
     if (c->restarted) {
+        char h5[4300];
+        snprintf(h5, sizeof h5, "%s.h5", base);
+        FILE *probe = fopen(h5, "rb");
+        if (!probe)
+            dem_fatal("%s does not exist: the fluid starts at t = %g s, and a coupled run from t > 0 continues "
+                      "from the particle snapshot of that time in it (start from t = 0 to insert the particles)",
+                      h5, t_start);
+        fclose(probe);
         if (restart_read(&c->s, base, t_start, 0.5 * c->s.dt, &saved) != 0)
             dem_fatal("%s.h5: no complete particle snapshot at t = %g s, where the fluid starts (a coupled "
                       "run starts at t = 0, or continues from a write time: its fields and its particle "
