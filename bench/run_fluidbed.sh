@@ -50,7 +50,7 @@ fi
 work=$(mktemp -d /tmp/benchfluidbed.XXXXXX)
 [ "${KEEP_WORK:-0}" = 1 ] || trap 'rm -rf "$work"' EXIT
 export OMP_NUM_THREADS=1
-echo "INFO date $(date -Is) host $(hostname) cpus $(nproc) simulated time $T s (work $work)"
+echo "INFO date $(date -Is) host $(hostname) cpus $(grep -c ^processor /proc/cpuinfo) simulated time $T s (work $work)"
 
 # timed <name> <dir> <command...>: run in <dir> under /usr/bin/time, log to <dir>/log.run
 timed() {

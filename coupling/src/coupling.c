@@ -119,7 +119,10 @@ static void grow_particles(coupling *c, int n)
     c->u_p = dem_realloc(c->u_p, (size_t)c->np_cap * sizeof *c->u_p);
     c->gp_p = dem_realloc(c->gp_p, (size_t)c->np_cap * sizeof *c->gp_p);
     if (c->interp_scheme != CPL_INTERP_CELL) c->ugp_p = dem_realloc(c->ugp_p, (size_t)c->np_cap * sizeof *c->ugp_p);
-    if (c->interp_scheme == CPL_INTERP_CELL_POINT) c->tets = dem_realloc(c->tets, (size_t)c->np_cap * sizeof *c->tets);
+    if (c->interp_scheme == CPL_INTERP_CELL_POINT) {
+        c->tets = dem_realloc(c->tets, (size_t)c->np_cap * sizeof *c->tets);
+        for (int i = 0; i < c->np_cap; i++) c->tets[i].cell = -1;
+    }
     c->tets_valid = 0;
 }
 

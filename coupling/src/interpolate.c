@@ -358,8 +358,19 @@ int cpl_interp_locate(const cpl_interp *ip, const cpl_mesh *m, int np, const int
 {
     int outside = 0;
     for (int i = 0; i < np; i++) {
-        if (cell[i] < 0 || cell[i] >= ip->ncells) { tets[i].cell = -1; outside++; continue; }
-        cell_point_locate(ip, m, cell[i], x[i], &tets[i]);
+        const int c = cell[i];
+        if (c < 0 || c >= ip->ncells) { tets[i].cell = -1; outside++; continue; }
+        cpl_interp_tet *t = &tets[i];
+        if (t->cell == c && t->face >= 0) {   /* still in the tetrahedron it was in? (one test) */
+            const int f = t->face, s = m->face_start[f], n = m->face_start[f + 1] - s;
+            double l[4];
+            if (barycentric(m->cell_centre[c], m->face_centre[f], m->points[m->face_points[s + t->edge]],
+                            m->points[m->face_points[s + (t->edge + 1) % n]], x[i], l) >= 0.0) {
+                memcpy(t->l, l, sizeof l);
+                continue;
+            }
+        }
+        cell_point_locate(ip, m, c, x[i], t);
     }
     return outside;
 }

@@ -62,7 +62,10 @@ int cpl_interp_particles(const cpl_interp *ip, const cpl_mesh *m, int np, const 
 
 /* cellPoint in two halves, for fields that change while the particles stay (and the other way
  * round): the tetrahedron and barycentric weights of each particle, then the value of the field
- * last given to cpl_interp_set_field. tets[i].cell = -1 for a particle outside (value 0). */
+ * last given to cpl_interp_set_field. tets[i].cell = -1 for a particle outside (value 0). On
+ * entry tets holds the last locations (or cell -1): a particle still inside its last
+ * tetrahedron is found with one test (the test holds whatever particle the entry came from, so
+ * a re-sorted array only costs searches). */
 typedef struct cpl_interp_tet { int cell, face, edge; double l[4]; } cpl_interp_tet;
 int cpl_interp_locate(const cpl_interp *ip, const cpl_mesh *m, int np, const int *cell, const double (*x)[3],
                       cpl_interp_tet *tets);
