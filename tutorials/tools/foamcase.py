@@ -50,9 +50,10 @@ def sub_dict(text, name):
 
 
 def time_dirs(case):
-    """[(time, name)] of the case's time directories, sorted."""
+    """[(time, name)] of the directories of `case` named by a number (time directories; the start
+    times under postProcessing/<name>), sorted; [] if `case` does not exist."""
     out = []
-    for name in os.listdir(case):
+    for name in os.listdir(case) if os.path.isdir(case) else ():
         try:
             out.append((float(name), name))
         except ValueError:
@@ -60,23 +61,12 @@ def time_dirs(case):
     return sorted(out)
 
 
-def _start_dirs(base):
-    starts = []
-    if os.path.isdir(base):
-        for name in os.listdir(base):
-            try:
-                starts.append((float(name), name))
-            except ValueError:
-                pass
-    return sorted(starts)
-
-
 def surface_field_value(case, name, ncols=None):
     """time and the columns of postProcessing/<name>/<start>/surfaceFieldValue.dat over all start
     times (a later start replaces the rows from its start on); vectors split into components."""
     base = os.path.join(case, "postProcessing", name)
     rows = []
-    for start, sname in _start_dirs(base):
+    for start, sname in time_dirs(base):
         path = os.path.join(base, sname, "surfaceFieldValue.dat")
         if not os.path.exists(path):
             continue
