@@ -59,56 +59,32 @@ static int split_pair(const material_table *t, const char *key, int *a, int *b)
     return 0;
 }
 
-/* A model parameter of an interaction: from the entry, else from the 'default' entry, else
- * the fallback (NAN: required). */
-static double model_param(const dict *e, const dict *def, const char *key, double fallback,
-                          double lo, double hi, const char *model)
-{
-    if (dict_has(e, key)) return dict_scalar(e, key, lo, hi);
-    if (def && dict_has(def, key)) return dict_scalar(def, key, lo, hi);
-    if (isnan(fallback))
-        dict_fatal_here(e, "the %s model needs '%s' in this interaction (or in 'default')", model, key);
-    return fallback;
-}
+static const char *const slot_names[SLOT_COUNT] = {"normal", "tangential", "cohesion", "rolling", "surface"};
 
-/* The optional models' parameters of one interaction (units in dem/README.md). */
-static pair_model_params read_model_params(const dict *e, const dict *def, const contact_models *m)
+/* The chosen models' parameters of one interaction, per slot, from the entry e, else from the
+ * 'default' entry def, else the model's fallback (NAN: required); then each model's check. */
+static void read_model_values(const dict *e, const dict *def, const contact_models *m,
+                              double values[SLOT_COUNT][MODEL_VALUES])
 {
-    pair_model_params p;
-    memset(&p, 0, sizeof p);
-    switch (m->rolling) {
-    case ROLLING_NONE: break;
-    case ROLLING_CDT:
-        p.rolling_friction = model_param(e, def, "rollingFriction", NAN, 0.0, 10.0, "cdt rolling");
-        break;
-    case ROLLING_EPSD:
-        p.rolling_friction = model_param(e, def, "rollingFriction", NAN, 0.0, 10.0, "epsd rolling");
-        p.rolling_damping = model_param(e, def, "rollingViscousDamping", 0.0, 0.0, 10.0, "epsd rolling");
-        break;
-    case ROLLING_CDT_JKR:
-        p.work_of_adhesion = model_param(e, def, "workOfAdhesion", NAN, 0.0, 1e3, "cdtJkr rolling");
-        p.adhesion_hysteresis = model_param(e, def, "adhesionHysteresis", NAN, 0.0, 1e3, "cdtJkr rolling");
-        if (!(p.work_of_adhesion > 0.0))
-            dict_fatal(dict_has(e, "workOfAdhesion") || !def ? e : def, "workOfAdhesion",
-                       "cdtJkr takes mu_r from the JKR contact radius (seed 000 eq. 2-3): the work of "
-                       "adhesion must be positive [J/m^2] (use rolling cdt for a given mu_r)");
-        break;
-    default: break;
+    for (int slot = 0; slot < SLOT_COUNT; slot++) {
+        const contact_model *md = contact_model_get(slot, contact_model_id(m, slot));
+        for (int k = 0; k < MODEL_VALUES; k++) values[slot][k] = 0.0;
+        for (int k = 0; k < md->nparams; k++) {
+            const model_param *mp = &md->params[k];
+            const dict *src = dict_has(e, mp->key) ? e : def && dict_has(def, mp->key) ? def : NULL;
+            if (!src && isnan(mp->fallback))
+                dict_fatal_here(e, "the %s %s model needs '%s' [%s] in this interaction (or in 'default')",
+                                md->name, slot_names[slot], mp->key, mp->unit);
+            values[slot][mp->offset / sizeof(double)] = src ? dict_scalar(src, mp->key, mp->lo, mp->hi) : mp->fallback;
+        }
+        const char *key, *message = md->check ? md->check(values[slot], &key) : NULL;
+        if (message) {
+            double got = NAN;
+            for (int k = 0; k < md->nparams; k++)
+                if (strcmp(md->params[k].key, key) == 0) got = values[slot][md->params[k].offset / sizeof(double)];
+            dict_fatal(dict_has(e, key) || !def ? e : def, key, "%s (got %g)", message, got);
+        }
     }
-    if (m->cohesion == COHESION_SJKR)
-        p.cohesion_energy_density = model_param(e, def, "cohesionEnergyDensity", NAN, 0.0, 1e12, "sjkr cohesion");
-    if (m->normal == NORMAL_EDINBURGH) {
-        p.unloading_ratio = model_param(e, def, "unloadingRatio", NAN, -1e300, 1e6, "edinburgh normal");
-        if (!(p.unloading_ratio > 1.0))
-            dict_fatal(dict_has(e, "unloadingRatio") || !def ? e : def, "unloadingRatio",
-                       "kappa21 = k2/k1 must exceed 1 (got %g): with k2 <= k1 the plastic overlap of "
-                       "seed 002 eq. 3 is undefined", p.unloading_ratio);
-        p.surface_energy = model_param(e, def, "surfaceEnergy", 0.0, 0.0, 1e3, "edinburgh normal");
-        p.loading_exponent = model_param(e, def, "loadingExponent", 1.5, 1.0, 3.0, "edinburgh normal");
-        p.adhesion_exponent = model_param(e, def, "adhesionExponent", 1.5, 1e-3, 3.0, "edinburgh normal");
-        p.tension_threshold = model_param(e, def, "tensionThreshold", 0.0, -1e6, 1e6, "edinburgh normal");
-    }
-    return p;
 }
 
 static void read_interactions(const dict *root, dem_system *s)
@@ -126,12 +102,14 @@ static void read_interactions(const dict *root, dem_system *s)
             if (!e) dict_fatal(d, key, "an interaction is a sub-dictionary { restitution; friction; }");
             const double rest = dict_scalar(e, "restitution", 1e-6, 1.0);
             const double mu = dict_scalar(e, "friction", 0.0, 10.0);
-            const pair_model_params mp = read_model_params(e, is_default ? NULL : def, &s->models);
+            double mv[SLOT_COUNT][MODEL_VALUES];
+            read_model_values(e, is_default ? NULL : def, &s->models, mv);
             if (is_default) {
                 for (int a = 0; a < t->ntypes; a++)
                     for (int b = 0; b < t->ntypes; b++) {
                         materials_set_pair(t, a, b, rest, mu);
-                        materials_set_models(t, a, b, &mp);
+                        for (int slot = 0; slot < SLOT_COUNT; slot++)
+                            materials_set_model_values(t, a, b, slot, mv[slot], sizeof mv[slot]);
                         set[a][b] = 1;
                     }
             } else {
@@ -139,7 +117,8 @@ static void read_interactions(const dict *root, dem_system *s)
                 if (!split_pair(t, key, &a, &b))
                     dict_fatal(d, key, "expected '<material>-<material>' with two defined materials, or 'default'");
                 materials_set_pair(t, a, b, rest, mu);
-                materials_set_models(t, a, b, &mp);
+                for (int slot = 0; slot < SLOT_COUNT; slot++)
+                    materials_set_model_values(t, a, b, slot, mv[slot], sizeof mv[slot]);
                 set[a][b] = set[b][a] = 1;
             }
         }
@@ -151,32 +130,21 @@ static void read_interactions(const dict *root, dem_system *s)
                                 t->mat[a].name, t->mat[b].name);
 }
 
+/* contactModels: one model per slot (normal and tangential required, the others default to
+ * their slot's first model), limitForce, and each chosen model's case-wide settings. */
 static void read_models(const dict *root, dem_system *s)
 {
     const dict *d = dict_sub(root, "contactModels");
     contact_models *m = &s->models;
-    m->normal = dict_choice(d, "normal", normal_model_names);
-    m->tangential = dict_choice(d, "tangential", tangential_model_names);
-    m->cohesion = dict_choice_opt(d, "cohesion", cohesion_model_names, COHESION_NONE);
-    m->rolling = dict_choice_opt(d, "rolling", rolling_model_names, ROLLING_NONE);
-    m->surface = dict_choice_opt(d, "surface", surface_model_names, SURFACE_DEFAULT);
+    int *const ids[SLOT_COUNT] = {&m->normal, &m->tangential, &m->cohesion, &m->rolling, &m->surface};
+    for (int slot = 0; slot < SLOT_COUNT; slot++)
+        *ids[slot] = slot == SLOT_NORMAL || slot == SLOT_TANGENTIAL
+            ? dict_choice(d, slot_names[slot], contact_model_names(slot))
+            : dict_choice_opt(d, slot_names[slot], contact_model_names(slot), 0);
     m->fn_floor = dict_bool_opt(d, "limitForce", 0) ? 0.0 : -INFINITY;
-    if (m->normal == NORMAL_HOOKE)
-        m->characteristic_velocity = dict_scalar(d, "characteristicVelocity", 1e-6, 1e4);
-    if (m->rolling == ROLLING_CDT_JKR) m->torsion_torque = dict_bool_opt(d, "torsionTorque", 1);
-    if (m->surface == SURFACE_ROUGHNESS) {
-        const dict *r = dict_sub(d, "roughness");
-        static const char *const dists[] = {"normal", "uniform", 0};
-        roughness_params *rp = &m->roughness;
-        rp->distribution = dict_choice(r, "distribution", dists);
-        /* angles in radians; |Delta Gamma| < pi/2 keeps the rotated normal out of the contact */
-        if (rp->distribution == SCATTER_NORMAL) {
-            rp->std_dev = dict_scalar(r, "stdDev", 0.0, 1.0);
-            rp->max = dict_scalar_opt(r, "max", fmin(3.0 * rp->std_dev, 1.5), 0.0, 1.5);
-        } else {
-            rp->max = dict_scalar(r, "max", 0.0, 1.5);
-        }
-        rp->seed = (uint64_t)dict_label_opt(r, "seed", 1, 0, 2147483647L);
+    for (int slot = 0; slot < SLOT_COUNT; slot++) {
+        const contact_model *md = contact_model_get(slot, *ids[slot]);
+        if (md->read_case) md->read_case(d, m->values[slot]);
     }
 }
 

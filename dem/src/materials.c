@@ -10,14 +10,13 @@ int materials_find(const material_table *t, const char *name)
     return -1;
 }
 
-void materials_set_models(material_table *t, int ti, int tj, const pair_model_params *m)
+void materials_set_model_values(material_table *t, int ti, int tj, enum contact_slot slot,
+                                const void *values, size_t bytes)
 {
-    for (int k = 0; k < 2; k++) {
-        pair_coeffs *c = &t->pair[k ? tj * DEM_MAX_TYPES + ti : ti * DEM_MAX_TYPES + tj];
-        c->m = *m;
-        c->edinburgh_lambda = m->unloading_ratio > 1.0 && m->loading_exponent >= 1.0
-            ? pow(1.0 - 1.0 / m->unloading_ratio, 1.0 / m->loading_exponent) : 0.0;
-    }
+    double v[MODEL_VALUES] = {0};
+    memcpy(v, values, bytes < sizeof v ? bytes : sizeof v);
+    memcpy(t->pair[ti * DEM_MAX_TYPES + tj].model[slot], v, sizeof v);
+    memcpy(t->pair[tj * DEM_MAX_TYPES + ti].model[slot], v, sizeof v);
 }
 
 void materials_set_pair(material_table *t, int ti, int tj, double restitution, double friction)

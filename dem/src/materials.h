@@ -3,6 +3,10 @@
 #ifndef DEM_MATERIALS_H
 #define DEM_MATERIALS_H
 
+#include <stddef.h>
+
+#include "contact/model.h"
+
 #define DEM_MAX_TYPES 16
 #define DEM_NAME_LEN 64
 
@@ -13,20 +17,6 @@ typedef struct material {
     double density;          /* rho [kg/m^3] */
 } material;
 
-/* Parameters of the optional contact models, per pair of materials (zero when unused). */
-typedef struct pair_model_params {
-    double rolling_friction;        /* mu_r [-] (cdt, epsd) */
-    double rolling_damping;         /* eta_r [-] (epsd dashpot, fraction of critical) */
-    double work_of_adhesion;        /* W [J/m^2] (cdtJkr, seed 000 eq. 2) */
-    double adhesion_hysteresis;     /* eta_adh [-] (cdtJkr, seed 000 eq. 3) */
-    double cohesion_energy_density; /* k_coh [J/m^3] (sjkr) */
-    double unloading_ratio;         /* kappa21 = k2/k1 > 1 [-] (edinburgh, seed 002 eq. 1) */
-    double surface_energy;          /* gamma_s [J/m^2] (edinburgh eq. 5) */
-    double loading_exponent;        /* d_ex >= 1 [-] (edinburgh eq. 2) */
-    double adhesion_exponent;       /* c_ex > 0 [-] (edinburgh eq. 2) */
-    double tension_threshold;       /* F_0 [N] (edinburgh eq. 9) */
-} pair_model_params;
-
 /* Constants for one pair of types (also used for particle-wall with the wall's material). */
 typedef struct pair_coeffs {
     double Y_eff;            /* 1/Y* = (1-nu_i^2)/E_i + (1-nu_j^2)/E_j  [Pa] */
@@ -36,9 +26,12 @@ typedef struct pair_coeffs {
     double log_e;            /* ln(e), Hooke damping [-] */
     double friction;         /* Coulomb mu [-] */
     double sqrt_st_over_sn;  /* sqrt(4 G* / Y*): Hertz gamma_t over gamma_n [-] */
-    pair_model_params m;     /* parameters of the optional models */
-    double edinburgh_lambda; /* (1 - 1/kappa21)^(1/d_ex), seed 002 eq. 3 */
+    /* per slot: the chosen model's parameters and derived constants (its *_params struct) */
+    double model[SLOT_COUNT][MODEL_VALUES];
 } pair_coeffs;
+
+/* A model's parameter struct seen in the values of its slot. */
+#define MODEL_PARAMS(c, slot, type) ((const type *)(c)->model[slot])
 
 typedef struct material_table {
     int ntypes;
@@ -49,8 +42,10 @@ typedef struct material_table {
 int materials_find(const material_table *t, const char *name);   /* -1 if absent */
 /* Fill pair[ti][tj] and pair[tj][ti] from the two materials, e and mu. */
 void materials_set_pair(material_table *t, int ti, int tj, double restitution, double friction);
-/* Parameters of the optional models for the pair (after materials_set_pair). */
-void materials_set_models(material_table *t, int ti, int tj, const pair_model_params *m);
+/* A slot's model values for the pair (both orders; after materials_set_pair): bytes of a
+ * model's *_params struct. */
+void materials_set_model_values(material_table *t, int ti, int tj, enum contact_slot slot,
+                                const void *values, size_t bytes);
 
 static inline const pair_coeffs *materials_pair(const material_table *t, int ti, int tj)
 {

@@ -58,7 +58,7 @@ static void bin_particles(dem_system *s)
     const particles *p = &s->p;
     double rmax = 0.0;
     for (int i = 0; i < p->n; i++) rmax = fmax(rmax, p->radius[i]);
-    const double cutoff = 2.0 * rmax + nl->skin;
+    const double cutoff = 2.0 * rmax + nl->skin + nl->reach;
     for (int d = 0; d < 3; d++)
         if (s->periodic[d] && s->domain_max[d] - s->domain_min[d] < 3.0 * cutoff)
             dem_fatal("periodic direction %c: the domain length %g m must be at least 3 x "
@@ -212,7 +212,7 @@ void neighbour_rebuild(dem_system *s)
                             dx -= s->period[d] * nearbyint(dx * s->inv_period[d]);
                             d2 += dx * dx;
                         }
-                        const double cut = p->radius[i] + p->radius[j] + nl->skin;
+                        const double cut = p->radius[i] + p->radius[j] + nl->skin + nl->reach;
                         if (d2 < cut * cut) push_pair(nl, j);
                     }
                 }

@@ -10,6 +10,7 @@
 
 typedef struct neighbour_list {
     double skin;                 /* [m] */
+    double reach;                /* the normal model's reach beyond touching (JKR), added to the skin [m] */
     int sort_interval;           /* rebuilds between sorts, 0 = never */
     int history_size;            /* doubles per pair */
     int history_antisymmetric;   /* leading doubles that change sign when i and j swap */

@@ -10,10 +10,7 @@ void system_init(dem_system *s)
 {
     memset(s, 0, sizeof *s);
     particles_init(&s->p);
-    s->models.normal = NORMAL_HERTZ;
-    s->models.tangential = TANGENTIAL_HISTORY;
-    s->models.characteristic_velocity = 1.0;
-    s->models.fn_floor = -INFINITY;
+    s->models.fn_floor = -INFINITY;   /* the models: each slot's first (models.h) */
     s->max_overlap_fraction = 0.2;
     neighbour_init(&s->nlist, 0.0, 20, 0);
 }
@@ -48,6 +45,31 @@ void system_setup(dem_system *s)
     system_compute_forces(s);
 }
 
+/* Each chosen model's derived constants per material pair, and the reach of the normal model
+ * (the largest over the material pairs at the largest particle, pair and wall). */
+static void prepare_models(dem_system *s)
+{
+    material_table *t = &s->materials;
+    for (int slot = 0; slot < SLOT_COUNT; slot++) {
+        const contact_model *d = system_model(s, slot);
+        if (d->prepare)
+            for (int a = 0; a < DEM_MAX_TYPES; a++)
+                for (int b = 0; b < DEM_MAX_TYPES; b++)
+                    if (a < t->ntypes && b < t->ntypes) d->prepare(t->pair[a * DEM_MAX_TYPES + b].model[slot]);
+    }
+    const contact_model *normal = system_model(s, SLOT_NORMAL);
+    s->contact_reach = 0.0;
+    if (normal->reach) {
+        double rmax = 0.0;
+        for (int i = 0; i < s->p.n; i++) rmax = fmax(rmax, s->p.radius[i]);
+        for (int a = 0; a < t->ntypes; a++)
+            for (int b = 0; b < t->ntypes; b++)
+                s->contact_reach = fmax(s->contact_reach, fmax(normal->reach(materials_pair(t, a, b), 0.5 * rmax),
+                                                               normal->reach(materials_pair(t, a, b), rmax)));
+    }
+    s->nlist.reach = s->contact_reach;
+}
+
 void system_setup_begin(dem_system *s)
 {
     s->history_size = contact_history_size(&s->models);
@@ -63,6 +85,7 @@ void system_setup_begin(dem_system *s)
         s->nlist.skin = s->p.n ? 0.2 * rmin : 1e-3;   /* 10 % of the smallest diameter */
     }
     system_resize_wall_history(s, 0);
+    prepare_models(s);
 }
 
 void system_setup_finish_list(dem_system *s)

@@ -2,7 +2,7 @@
 #ifndef DEM_SYSTEM_H
 #define DEM_SYSTEM_H
 
-#include "contact/contact.h"
+#include "contact/models.h"
 #include "materials.h"
 #include "neighbour.h"
 #include "particles.h"
@@ -14,6 +14,8 @@ typedef struct dem_system {
     material_table materials;
     contact_models models;
     int history_size;                 /* doubles per contact, from the models */
+    double contact_reach;             /* largest gap at which the normal model still acts [m] (JKR) */
+    int generic_kernels;              /* 1: the generic force kernels even where a specialised one exists (tests) */
 
     double domain_min[3], domain_max[3];
     int periodic[3];
@@ -62,5 +64,10 @@ double system_kinetic_energy(const dem_system *s);
 
 /* Pair forces (pair_forces.c). */
 void pair_forces_add(dem_system *s);
+/* The descriptor of the model chosen for a slot. */
+static inline const contact_model *system_model(const dem_system *s, enum contact_slot slot)
+{
+    return contact_model_get(slot, contact_model_id(&s->models, slot));
+}
 
 #endif

@@ -1,7 +1,6 @@
 #include <math.h>
 #include <stdio.h>
 
-#include "contact/normal_hooke.h"
 #include "error.h"
 #include "system.h"
 #include "timestep.h"
@@ -13,22 +12,10 @@ static double rayleigh_time(const material *m, double radius)
     return M_PI * radius * sqrt(m->density / shear_modulus) / (0.1631 * m->poisson_ratio + 0.8766);
 }
 
-/* Duration of an elastic impact at relative speed v: Hertz 2.87 (m*^2 / (R* Y*^2 v))^(1/5),
- * or pi sqrt(m* / kn) for the linear spring. */
+/* Duration of an elastic impact at relative speed v, from the normal model (its header). */
 static double contact_time(const dem_system *s, const pair_coeffs *c, double r_eff, double m_eff, double v)
 {
-    if (s->models.normal == NORMAL_EDINBURGH) {
-        /* elastic impact on F = k1 delta^d (seed 002 eq. 1), 2 (delta_max / v) int_0^1 dx /
-         * sqrt(1 - x^(d+1)), shortened by sqrt(kappa21) for the stiffer unloading branch */
-        const double d = c->m.loading_exponent;
-        const double k1 = d == 1.0 ? 2.0 * c->Y_eff * r_eff : 4.0 / 3.0 * c->Y_eff * sqrt(r_eff);
-        const double delta_max = pow((d + 1.0) * m_eff * v * v / (2.0 * k1), 1.0 / (d + 1.0));
-        const double integral = sqrt(M_PI) * tgamma(1.0 + 1.0 / (d + 1.0)) / tgamma(0.5 + 1.0 / (d + 1.0));
-        return 2.0 * delta_max / v * integral / sqrt(c->m.unloading_ratio);
-    }
-    if (s->models.normal == NORMAL_HOOKE)
-        return M_PI * sqrt(m_eff / hooke_stiffness(c, r_eff, m_eff, s->models.characteristic_velocity));
-    return 2.87 * pow(m_eff * m_eff / (r_eff * c->Y_eff * c->Y_eff * v), 0.2);
+    return system_model(s, SLOT_NORMAL)->contact_time(c, &s->models, r_eff, m_eff, v);
 }
 
 timestep_limits timestep_limits_compute(const dem_system *s, double max_velocity)
@@ -81,7 +68,7 @@ void timestep_check(const dem_system *s, double max_velocity, int override, cons
     printf("time step %g s: %.3f of the Rayleigh time %.3g s (%s; limit %.2f), "
            "%.3f of the %s contact time %.3g s at %g m/s (%s; limit %.2f)\n",
            s->dt, fr, lim.rayleigh_time, lim.rayleigh_material, RAYLEIGH_FRACTION, fc,
-           s->models.normal == NORMAL_HOOKE ? "linear-spring" : s->models.normal == NORMAL_EDINBURGH ? "edinburgh unloading" : "Hertz", lim.contact_time,
+           system_model(s, SLOT_NORMAL)->contact_time_name, lim.contact_time,
            max_velocity, lim.contact_pair, CONTACT_FRACTION);
     if (s->dt <= lim.largest_safe_dt) return;
     if (override) {

@@ -20,6 +20,9 @@ models=(
   "cdtJkr|normal hertz; tangential history; rolling cdtJkr; torsionTorque true;|workOfAdhesion 0.05; adhesionHysteresis 5;"
   "epsd|normal hertz; tangential history; rolling epsd;|rollingFriction 0.1; rollingViscousDamping 0.3;"
   "roughness|normal hertz; tangential history; surface roughness; roughness { distribution normal; stdDev 0.1; seed 7; }|"
+  "jkr|normal jkr; tangential history;|workOfAdhesion 0.02;"
+  "dmt|normal dmt; tangential history;|workOfAdhesion 0.02;"
+  "hooke|normal hooke; tangential history; characteristicVelocity 0.5;|"
 )
 
 write_case() {   # dir models interaction timeStep extra

@@ -53,6 +53,9 @@ static inline void make_system(dem_system *s, double E, double nu, double rho, d
     s->max_overlap_fraction = 1.0;
 }
 
+/* A slot's case-wide model settings (a model's *_case struct, e.g. roughness_case). */
+#define SET_MODEL_CASE(s, slot, value) memcpy((s)->models.values[slot], &(value), sizeof(value))
+
 static inline int add_sphere(dem_system *s, double x, double y, double z, double vx, double vy, double vz, double r)
 {
     const double pos[3] = {x, y, z}, vel[3] = {vx, vy, vz};

@@ -28,7 +28,7 @@ static double spec_contact_time(const impact_spec *sp)
     const double Y = 1.0 / (2.0 * (1.0 - sp->nu * sp->nu) / sp->E);
     const double mass = sp->rho * 4.0 / 3.0 * M_PI * pow(sp->r, 3);
     const double R = sp->wall ? sp->r : 0.5 * sp->r, meff = sp->wall ? mass : 0.5 * mass;
-    if (sp->normal == NORMAL_HOOKE) {
+    if (sp->normal == normal_hooke) {
         const double sr = sqrt(R);
         const double kn = 16.0 / 15.0 * sr * Y * pow(15.0 * meff * sp->v_char * sp->v_char / (16.0 * sr * Y), 0.2);
         return M_PI * sqrt(meff / kn);
@@ -40,7 +40,8 @@ static impact_result run_impact(const impact_spec *sp)
 {
     dem_system s;
     make_system(&s, sp->E, sp->nu, sp->rho, sp->e, sp->mu, sp->normal, sp->tangential, 1.0);
-    s.models.characteristic_velocity = sp->v_char;
+    const hooke_case hc = {sp->v_char};
+    SET_MODEL_CASE(&s, SLOT_NORMAL, hc);
     s.models.fn_floor = sp->limit_force ? 0.0 : -INFINITY;
     s.dt = spec_contact_time(sp) / sp->steps_per_contact;
     s.nlist.skin = 0.05 * sp->r;

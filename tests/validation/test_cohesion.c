@@ -69,12 +69,10 @@ static double golden_max(double lo, double hi)
 
 static void pair_setup(dem_system *s, double delta_start)
 {
-    make_system(s, E, NU, RHO, 0.3, 0.5, NORMAL_HERTZ, TANGENTIAL_HISTORY, 0.05);
-    pair_model_params mp;
-    memset(&mp, 0, sizeof mp);
-    mp.cohesion_energy_density = K_COH;
-    materials_set_models(&s->materials, 0, 0, &mp);
-    s->models.cohesion = COHESION_SJKR;
+    make_system(s, E, NU, RHO, 0.3, 0.5, normal_hertz, tangential_history, 0.05);
+    const sjkr_params mp = {K_COH};
+    materials_set_model_values(&s->materials, 0, 0, SLOT_COHESION, &mp, sizeof mp);
+    s->models.cohesion = cohesion_sjkr;
     add_sphere(s, -RI, 0, 0, 0, 0, 0, RI);                        /* id 0 */
     add_sphere(s, RJ - delta_start, 0, 0, 0, 0, 0, RJ);           /* id 1 */
     s->dt = DT;

@@ -32,7 +32,7 @@ int main(void)
 {
     const double L = 0.01, E = 5e6, nu = 0.45, rho = 2500, vmax = 0.5;
     dem_system s;
-    make_system(&s, E, nu, rho, 1.0, 0.0, NORMAL_HERTZ, TANGENTIAL_NONE, L);
+    make_system(&s, E, nu, rho, 1.0, 0.0, normal_hertz, tangential_none, L);
     s.max_overlap_fraction = 0.2;
     add_plane(&s, 0, 0, -L, 0, 0, 1);
     add_plane(&s, 0, 0, L, 0, 0, -1);

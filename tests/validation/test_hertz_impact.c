@@ -15,7 +15,7 @@ static impact_result impact(double E, double nu, double rho, double r, double v,
                             enum normal_model normal, double dt)
 {
     dem_system s;
-    make_system(&s, E, nu, rho, e, 0.0, normal, TANGENTIAL_NONE, 0.1);
+    make_system(&s, E, nu, rho, e, 0.0, normal, tangential_none, 0.1);
     s.dt = dt;
     s.nlist.skin = 0.05 * r;
     if (wall) {
@@ -59,7 +59,7 @@ int main(void)
                 const double dmax = pow(15.0 * meff * v * v / (16.0 * Y * sqrt(R)), 0.4);
                 const double fmax_ = 4.0 / 3.0 * Y * sqrt(R) * pow(dmax, 1.5);
                 const double tc = 2.0 * dmax / v * I;
-                const impact_result res = impact(E, nu, rho, r, v, 1.0, wall, NORMAL_HERTZ, tc / 200.0);
+                const impact_result res = impact(E, nu, rho, r, v, 1.0, wall, normal_hertz, tc / 200.0);
                 char what[128];
                 snprintf(what, sizeof what, "%s %s v=%g: max overlap", mats[m].name, wall ? "wall" : "pair", v);
                 check_rel(what, res.delta_max, dmax, 0.02);

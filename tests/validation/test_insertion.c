@@ -12,7 +12,7 @@
 static dem_system fresh(void)
 {
     dem_system s;
-    make_system(&s, 5e6, 0.45, 2500, 0.5, 0.5, NORMAL_HERTZ, TANGENTIAL_HISTORY, 0.5);
+    make_system(&s, 5e6, 0.45, 2500, 0.5, 0.5, normal_hertz, tangential_history, 0.5);
     return s;
 }
 

@@ -35,7 +35,7 @@ static void gas(int periodic)
 {
     const double L = 0.01;
     dem_system s;
-    make_system(&s, 5e6, 0.45, 2500, 0.9, 0.5, NORMAL_HERTZ, TANGENTIAL_HISTORY, L);
+    make_system(&s, 5e6, 0.45, 2500, 0.9, 0.5, normal_hertz, tangential_history, L);
     for (int d = 0; d < 3; d++) s.periodic[d] = periodic;
     if (!periodic) {
         add_plane(&s, 0, 0, -L, 0, 0, 1); add_plane(&s, 0, 0, L, 0, 0, -1);
@@ -82,7 +82,7 @@ static void gas(int periodic)
 static void history_survives(int flip)
 {
     dem_system s;
-    make_system(&s, 5e6, 0.45, 2500, 0.5, 0.5, NORMAL_HERTZ, TANGENTIAL_HISTORY, 0.01);
+    make_system(&s, 5e6, 0.45, 2500, 0.5, 0.5, normal_hertz, tangential_history, 0.01);
     for (int k = 0; k < 10; k++)   /* bystanders so the sort really permutes */
         add_sphere(&s, 0.008 - 0.0016 * k, 0.008, 0.008, 0, 0, 0, 0.5e-3);
     if (flip) {

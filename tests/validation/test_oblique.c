@@ -14,7 +14,7 @@ int main(int argc, char **argv)
 {
     if (argc == 9 || argc == 10) {
         const impact_spec sp = {atof(argv[1]), atof(argv[2]), atof(argv[3]), atof(argv[4]), atof(argv[5]),
-                                atof(argv[6]), NORMAL_HERTZ, TANGENTIAL_HISTORY, 1.0, 1,
+                                atof(argv[6]), normal_hertz, tangential_history, 1.0, 1,
                                 atof(argv[7]), atof(argv[8]),
                                 argc == 10 ? atof(argv[9]) : 2000.0, 0};
         const impact_result res = run_impact(&sp);
@@ -29,7 +29,7 @@ int main(int argc, char **argv)
     };
     for (int k = 0; k < 4; k++) {
         const impact_spec sp = {cases[k].E, cases[k].nu, 2500, 1e-3, cases[k].e, cases[k].mu,
-                                NORMAL_HERTZ, TANGENTIAL_HISTORY, 1.0, 1, cases[k].vn, cases[k].vt, 2000.0,
+                                normal_hertz, tangential_history, 1.0, 1, cases[k].vn, cases[k].vt, 2000.0,
                                 cases[k].limit};
         const impact_result res = run_impact(&sp);
         const double dvt = cases[k].vt - res.vt_after;

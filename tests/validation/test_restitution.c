@@ -12,7 +12,7 @@
 static impact_spec spec(double E, double nu, double rho, double r, double e, enum normal_model normal,
                         int wall, double v)
 {
-    impact_spec sp = {E, nu, rho, r, e, 0.0, normal, TANGENTIAL_NONE, 1.0, wall, v, 0.0, 2000.0, 0};
+    impact_spec sp = {E, nu, rho, r, e, 0.0, normal, tangential_none, 1.0, wall, v, 0.0, 2000.0, 0};
     return sp;
 }
 
@@ -20,7 +20,7 @@ int main(int argc, char **argv)
 {
     if (argc == 8) {
         const impact_spec sp = spec(atof(argv[2]), atof(argv[3]), atof(argv[4]), atof(argv[5]),
-                                    atof(argv[6]), NORMAL_HERTZ, 0, atof(argv[7]));
+                                    atof(argv[6]), normal_hertz, 0, atof(argv[7]));
         const impact_result res = run_impact(&sp);
         printf("RESULT restitution %.10g\nRESULT dt %.6g\n", res.restitution, res.dt);
         return 0;
@@ -28,7 +28,7 @@ int main(int argc, char **argv)
     const double es[] = {0.1, 0.5, 0.9};
     for (int wall = 0; wall <= 1; wall++)
         for (int k = 0; k < 3; k++) {
-            const impact_spec sp = spec(5e6, 0.45, 2500, 1e-3, es[k], NORMAL_HOOKE, wall, 0.5);
+            const impact_spec sp = spec(5e6, 0.45, 2500, 1e-3, es[k], normal_hooke, wall, 0.5);
             char what[128];
             snprintf(what, sizeof what, "hooke %s e=%g", wall ? "wall" : "pair", es[k]);
             check_rel(what, run_impact(&sp).restitution, es[k], 0.01);
@@ -40,13 +40,13 @@ int main(int argc, char **argv)
     for (int m = 0; m < 2; m++)
         for (int q = 0; q < 2; q++)
             for (int wall = 0; wall <= 1; wall++) {
-                const impact_spec ref_spec = spec(mats[m].E, mats[m].nu, 2500, 1e-3, hertz_es[q], NORMAL_HERTZ, wall, 1.0);
+                const impact_spec ref_spec = spec(mats[m].E, mats[m].nu, 2500, 1e-3, hertz_es[q], normal_hertz, wall, 1.0);
                 const double e_ref = run_impact(&ref_spec).restitution;
                 printf("hertz %s %s e_input=%g: restitution at 1 m/s %.5f (%.3f %% from the input)\n",
                        mats[m].name, wall ? "wall" : "pair", hertz_es[q], e_ref,
                        100.0 * (e_ref - hertz_es[q]) / hertz_es[q]);
                 for (int k = 0; k < 3; k++) {
-                    const impact_spec sp = spec(mats[m].E, mats[m].nu, 2500, 1e-3, hertz_es[q], NORMAL_HERTZ, wall, speeds[k]);
+                    const impact_spec sp = spec(mats[m].E, mats[m].nu, 2500, 1e-3, hertz_es[q], normal_hertz, wall, speeds[k]);
                     char what[128];
                     snprintf(what, sizeof what, "hertz %s %s e=%g v=%g vs v=1", mats[m].name,
                              wall ? "wall" : "pair", hertz_es[q], speeds[k]);

@@ -82,13 +82,12 @@ static double mu_r_jkr(double Y, double r_eff)
 
 static void set_models(dem_system *s, enum rolling_model model)
 {
-    pair_model_params mp;
-    memset(&mp, 0, sizeof mp);
-    mp.rolling_friction = MU_R;
-    mp.rolling_damping = ETA_R;
-    mp.work_of_adhesion = W_ADH;
-    mp.adhesion_hysteresis = ETA_ADH;
-    materials_set_models(&s->materials, 0, 0, &mp);
+    const cdt_params cdt = {MU_R};
+    const epsd_params epsd = {MU_R, ETA_R};
+    const cdt_jkr_params jkr = {W_ADH, ETA_ADH};
+    if (model == rolling_cdt) materials_set_model_values(&s->materials, 0, 0, SLOT_ROLLING, &cdt, sizeof cdt);
+    if (model == rolling_epsd) materials_set_model_values(&s->materials, 0, 0, SLOT_ROLLING, &epsd, sizeof epsd);
+    if (model == rolling_cdt_jkr) materials_set_model_values(&s->materials, 0, 0, SLOT_ROLLING, &jkr, sizeof jkr);
     s->models.rolling = model;
 }
 
@@ -96,8 +95,8 @@ static void set_models(dem_system *s, enum rolling_model model)
 static double wall_mu_r(enum rolling_model model)
 {
     dem_system s;
-    make_system(&s, E, NU, RHO, 0.5, 0.5, NORMAL_HERTZ, TANGENTIAL_HISTORY, 0.1);
-    const double mu_r = model == ROLLING_CDT_JKR ? mu_r_jkr(materials_pair(&s.materials, 0, 0)->Y_eff, RAD) : MU_R;
+    make_system(&s, E, NU, RHO, 0.5, 0.5, normal_hertz, tangential_history, 0.1);
+    const double mu_r = model == rolling_cdt_jkr ? mu_r_jkr(materials_pair(&s.materials, 0, 0)->Y_eff, RAD) : MU_R;
     system_free(&s);
     return mu_r;
 }
@@ -105,7 +104,7 @@ static double wall_mu_r(enum rolling_model model)
 /* Sphere on the plane z = 0 at its equilibrium overlap, gravity tilted by th, rolling at v0. */
 static void wall_system(dem_system *s, enum rolling_model model, double th, double v0)
 {
-    make_system(s, E, NU, RHO, 0.5, 0.5, NORMAL_HERTZ, TANGENTIAL_HISTORY, 0.1);
+    make_system(s, E, NU, RHO, 0.5, 0.5, normal_hertz, tangential_history, 0.1);
     set_models(s, model);
     add_plane(s, 0, 0, 0, 0, 0, 1);
     s->gravity[0] = G * sin(th);
@@ -154,7 +153,7 @@ static void incline(enum rolling_model model)
     char what[128];
     for (int above = 0; above <= 1; above++) {
         const double th = atan((above ? 1.05 : 0.95) * mu_r);
-        const int epsd_settle = model == ROLLING_EPSD && !above;
+        const int epsd_settle = model == rolling_epsd && !above;
         const double t_end = epsd_settle || above ? 1.0 : 0.5;
         dem_system s;
         wall_system(&s, model, th, 0.0);
@@ -199,7 +198,7 @@ static double norm3(const double a[3]) { return sqrt(a[0] * a[0] + a[1] * a[1] +
 static void pair_torques(enum rolling_model model)
 {
     dem_system s;
-    make_system(&s, E, NU, RHO, 0.5, 0.5, NORMAL_HERTZ, TANGENTIAL_NONE, 0.1);
+    make_system(&s, E, NU, RHO, 0.5, 0.5, normal_hertz, tangential_none, 0.1);
     set_models(&s, model);
     const double overlap = 2e-5, len = sqrt(1.0 + 0.3 * 0.3 + 0.1 * 0.1);
     const double n[3] = {1.0 / len, 0.3 / len, 0.1 / len}, c = RAD - 0.5 * overlap;   /* oblique normal */
@@ -242,7 +241,7 @@ static void angular_momentum(const dem_system *s, double L[3])
 static void pair_collision(enum rolling_model model)
 {
     dem_system s;
-    make_system(&s, E, NU, RHO, 0.5, 0.5, NORMAL_HERTZ, TANGENTIAL_HISTORY, 0.1);
+    make_system(&s, E, NU, RHO, 0.5, 0.5, normal_hertz, tangential_history, 0.1);
     set_models(&s, model);
     add_sphere(&s, -1.2 * RAD, 0, 0, 0.5, 0.1, 0, RAD);
     add_sphere(&s, 1.2 * RAD, 0.6 * RAD, 0.3 * RAD, -0.5, 0, 0.05, RAD);
@@ -275,9 +274,10 @@ static void pair_collision(enum rolling_model model)
 static void jkr_torque(int torsion, double M[3], double *closed_form)
 {
     dem_system s;
-    make_system(&s, E, NU, RHO, 0.5, 0.5, NORMAL_HERTZ, TANGENTIAL_NONE, 0.1);
-    set_models(&s, ROLLING_CDT_JKR);
-    s.models.torsion_torque = torsion;
+    make_system(&s, E, NU, RHO, 0.5, 0.5, normal_hertz, tangential_none, 0.1);
+    set_models(&s, rolling_cdt_jkr);
+    const cdt_jkr_case cc = {torsion};
+    SET_MODEL_CASE(&s, SLOT_ROLLING, cc);
     const double overlap = 2e-5;
     add_sphere(&s, -RAD + 0.5 * overlap, 0, 0, 0, 0, 0, RAD);
     add_sphere(&s, RAD - 0.5 * overlap, 0, 0, 0, 0, 0, RAD);
@@ -313,11 +313,11 @@ static void torsion(void)
 
 int main(void)
 {
-    for (int model = ROLLING_CDT; model <= ROLLING_EPSD; model++) {
+    for (int model = rolling_cdt; model <= rolling_epsd; model++) {
         level_rolling(model);
         incline(model);
     }
-    for (int model = ROLLING_CDT; model <= ROLLING_EPSD; model++) {
+    for (int model = rolling_cdt; model <= rolling_epsd; model++) {
         pair_torques(model);
         pair_collision(model);
     }

@@ -113,14 +113,14 @@ static const double E = 5e6, NU = 0.45, RHO = 2500;
 
 /* ---------------------------------------------------------------- 1, 5: small bed */
 
-static void small_bed(enum surface_model surface, roughness_params rp, int nsteps, state *out,
+static void small_bed(enum surface_model surface, roughness_case rp, int nsteps, state *out,
                       int *pair_contacts, int *wall_contacts)
 {
     const double L = 4e-3;
     dem_system s;
-    make_system(&s, E, NU, RHO, 0.5, 0.5, NORMAL_HERTZ, TANGENTIAL_HISTORY, 2 * L);
+    make_system(&s, E, NU, RHO, 0.5, 0.5, normal_hertz, tangential_history, 2 * L);
     s.models.surface = surface;
-    s.models.roughness = rp;
+    SET_MODEL_CASE(&s, SLOT_SURFACE, rp);
     s.gravity[2] = -9.81;
     const double lo[3] = {-L, -L, -L}, hi[3] = {L, L, L};
     add_box(&s, lo, hi);
@@ -156,11 +156,11 @@ static void small_bed(enum surface_model surface, roughness_params rp, int nstep
 
 static void zero_scatter(void)
 {
-    const roughness_params none = {SCATTER_NORMAL, 0.0, 1.0, 1}, zero = {SCATTER_NORMAL, 0.0, 1.0, 12345};
+    const roughness_case none = {SCATTER_NORMAL, 0.0, 1.0, 1}, zero = {SCATTER_NORMAL, 0.0, 1.0, 12345};
     state a, b;
     int pairs, walls;
-    small_bed(SURFACE_DEFAULT, none, 1000, &a, &pairs, &walls);
-    small_bed(SURFACE_ROUGHNESS, zero, 1000, &b, NULL, NULL);
+    small_bed(surface_default, none, 1000, &a, &pairs, &walls);
+    small_bed(surface_roughness, zero, 1000, &b, NULL, NULL);
     printf("zero scatter: bed of %d spheres, %d pair and %d wall contacts seen (sampled every 100 steps)\n",
            a.n, pairs, walls);
     check_true("1. bed had pair and wall contacts", pairs > 100 && walls > 10);
@@ -171,12 +171,12 @@ static void zero_scatter(void)
 
 static void reproducible(void)
 {
-    const roughness_params r1 = {SCATTER_NORMAL, 0.3, 1.0, 1}, r2 = {SCATTER_NORMAL, 0.3, 1.0, 2};
+    const roughness_case r1 = {SCATTER_NORMAL, 0.3, 1.0, 1}, r2 = {SCATTER_NORMAL, 0.3, 1.0, 2};
     state a, b, c, d;
-    small_bed(SURFACE_ROUGHNESS, r1, 2000, &a, NULL, NULL);
-    small_bed(SURFACE_ROUGHNESS, r1, 2000, &b, NULL, NULL);
-    small_bed(SURFACE_ROUGHNESS, r2, 2000, &c, NULL, NULL);
-    small_bed(SURFACE_DEFAULT, r1, 2000, &d, NULL, NULL);
+    small_bed(surface_roughness, r1, 2000, &a, NULL, NULL);
+    small_bed(surface_roughness, r1, 2000, &b, NULL, NULL);
+    small_bed(surface_roughness, r2, 2000, &c, NULL, NULL);
+    small_bed(surface_default, r1, 2000, &d, NULL, NULL);
     check_true("5. same seed: two runs bitwise equal", state_equal(&a, &b));
     check_true("5. different seed: a different state", !state_equal(&a, &c));
     check_true("5. scatter 0.3 differs from the default surface", !state_equal(&a, &d));
@@ -190,12 +190,12 @@ static void reproducible(void)
 static const double IMP_R = 1e-3, IMP_V = 0.5, IMP_SPACING = 3e-3;
 
 /* Rebound velocities by id; *start: the step at which the contacts started. */
-static void impacts(roughness_params rp, int reversed, double (*vout)[3], long *start)
+static void impacts(roughness_case rp, int reversed, double (*vout)[3], long *start)
 {
     dem_system s;
-    make_system(&s, E, NU, RHO, 1.0, 0.0, NORMAL_HERTZ, TANGENTIAL_NONE, 0.2);
-    s.models.surface = SURFACE_ROUGHNESS;
-    s.models.roughness = rp;
+    make_system(&s, E, NU, RHO, 1.0, 0.0, normal_hertz, tangential_none, 0.2);
+    s.models.surface = surface_roughness;
+    SET_MODEL_CASE(&s, SLOT_SURFACE, rp);
     s.domain_min[2] = -0.01;
     s.domain_max[2] = 0.01;
     add_plane(&s, 0, 0, 0, 0, 0, 1);
@@ -222,7 +222,7 @@ static void impacts(roughness_params rp, int reversed, double (*vout)[3], long *
 }
 
 /* Mean and standard deviation of atan(2 tan|dG|) over the distribution (Simpson). */
-static void quadrature(roughness_params rp, double *mean, double *sd)
+static void quadrature(roughness_case rp, double *mean, double *sd)
 {
     const int n = 20000;
     const double h = rp.max / n;
@@ -237,7 +237,7 @@ static void quadrature(roughness_params rp, double *mean, double *sd)
     *sd = sqrt(s2 / s0 - *mean * *mean);
 }
 
-static void rebound_angles(roughness_params rp, const char *label, double (*v)[3], long start)
+static void rebound_angles(roughness_case rp, const char *label, double (*v)[3], long start)
 {
     double sum = 0.0, sum2 = 0.0, vz = 0.0, worst = 1.0, worst_cos = 1.0;
     double c1 = 0.0, s1 = 0.0, c2 = 0.0, s2 = 0.0;
@@ -286,13 +286,13 @@ static void rebound(void)
 {
     double (*v)[3] = calloc(NIMP, sizeof *v), (*vr)[3] = calloc(NIMP, sizeof *vr);
     long start, start_r;
-    const roughness_params normal = {SCATTER_NORMAL, 0.1, 0.2, 2024};
+    const roughness_case normal = {SCATTER_NORMAL, 0.1, 0.2, 2024};
     impacts(normal, 0, v, &start);
     rebound_angles(normal, "normal 0.1, max 0.2", v, start);
     impacts(normal, 1, vr, &start_r);
     check_true("5. impacts in reversed order: rebound velocity per id bitwise",
                start == start_r && !memcmp(v, vr, NIMP * sizeof *v));
-    const roughness_params uniform = {SCATTER_UNIFORM, 0.0, 0.4, 77};
+    const roughness_case uniform = {SCATTER_UNIFORM, 0.0, 0.4, 77};
     impacts(uniform, 0, v, &start);
     rebound_angles(uniform, "uniform [0, 0.4]", v, start);
     free(v);
@@ -304,9 +304,10 @@ static void rebound(void)
 static void pair_collision(enum surface_model surface, double p0[3], double p1[3], double vfinal[3], int *touched)
 {
     dem_system s;
-    make_system(&s, E, NU, RHO, 0.5, 0.5, NORMAL_HERTZ, TANGENTIAL_HISTORY, 0.02);
+    make_system(&s, E, NU, RHO, 0.5, 0.5, normal_hertz, tangential_history, 0.02);
     s.models.surface = surface;
-    s.models.roughness = (roughness_params){SCATTER_NORMAL, 0.3, 1.0, 99};
+    const roughness_case rc = {SCATTER_NORMAL, 0.3, 1.0, 99};
+    SET_MODEL_CASE(&s, SLOT_SURFACE, rc);
     add_sphere(&s, 0, 0, 0, 0.5, 0.2, 0.1, 1e-3);
     add_sphere(&s, 2.6e-3, 1.2e-3, 0.4e-3, -0.1, 0.05, -0.3, 1.3e-3);
     s.p.omega[0][2] = 200.0;
@@ -332,8 +333,8 @@ static void momentum(void)
 {
     double p0[3], p1[3], v[3], p0d[3], p1d[3], vd[3];
     int touched, touched_d;
-    pair_collision(SURFACE_ROUGHNESS, p0, p1, v, &touched);
-    pair_collision(SURFACE_DEFAULT, p0d, p1d, vd, &touched_d);
+    pair_collision(surface_roughness, p0, p1, v, &touched);
+    pair_collision(surface_default, p0d, p1d, vd, &touched_d);
     const double dv = sqrt((v[0] - vd[0]) * (v[0] - vd[0]) + (v[1] - vd[1]) * (v[1] - vd[1]) +
                            (v[2] - vd[2]) * (v[2] - vd[2]));
     printf("momentum: final velocity of sphere 0 differs from the default surface by %.3g m/s\n", dv);
@@ -351,9 +352,10 @@ static void penetration(void)
 {
     const double L = 10e-3, H = 60e-3;
     dem_system s;
-    make_system(&s, E, NU, RHO, 0.5, 0.5, NORMAL_HERTZ, TANGENTIAL_HISTORY, 2 * L);
-    s.models.surface = SURFACE_ROUGHNESS;
-    s.models.roughness = (roughness_params){SCATTER_NORMAL, 0.5, 1.2, 5};
+    make_system(&s, E, NU, RHO, 0.5, 0.5, normal_hertz, tangential_history, 2 * L);
+    s.models.surface = surface_roughness;
+    const roughness_case rc = {SCATTER_NORMAL, 0.5, 1.2, 5};
+    SET_MODEL_CASE(&s, SLOT_SURFACE, rc);
     s.gravity[2] = -9.81;
     s.domain_min[2] = -5e-3;
     s.domain_max[2] = H + 5e-3;

@@ -94,7 +94,7 @@ static void single_sphere(const char *what, dem_system *s, const double x0[3], c
 static void bouncing(void)
 {
     dem_system s;
-    make_system(&s, 5e6, 0.45, 2500, 0.5, 0.5, NORMAL_HERTZ, TANGENTIAL_HISTORY, 0.0625);
+    make_system(&s, 5e6, 0.45, 2500, 0.5, 0.5, normal_hertz, tangential_history, 0.0625);
     s.domain_min[2] = 0.0;
     s.gravity[2] = -9.81;
     s.dt = 1e-4;
@@ -128,7 +128,7 @@ static void bed(void)
 {
     const double L = 0.01, E = 5e6, nu = 0.45, rho = 2500, vmax = 0.5;
     dem_system s;
-    make_system(&s, E, nu, rho, 1.0, 0.0, NORMAL_HERTZ, TANGENTIAL_NONE, L);
+    make_system(&s, E, nu, rho, 1.0, 0.0, normal_hertz, tangential_none, L);
     s.max_overlap_fraction = 0.2;
     add_plane(&s, 0, 0, -L, 0, 0, 1);
     add_plane(&s, 0, 0, L, 0, 0, -1);
@@ -210,7 +210,7 @@ int main(void)
     const double L = 0.0625, dt = 0x1p-12;   /* binary-exact: the path lands on x = L */
     { /* 1. the +x domain face */
         dem_system s;
-        make_system(&s, 5e6, 0.45, 2500, 0.5, 0.5, NORMAL_HERTZ, TANGENTIAL_HISTORY, L);
+        make_system(&s, 5e6, 0.45, 2500, 0.5, 0.5, normal_hertz, tangential_history, L);
         s.dt = dt;
         const double p[3] = {L, 0, 0}, n[3] = {-1, 0, 0};
         add_symmetry(&s, p, n);
@@ -221,7 +221,7 @@ int main(void)
     }
     { /* 2a. a tilted plane through the domain */
         dem_system s;
-        make_system(&s, 5e6, 0.45, 2500, 0.5, 0.5, NORMAL_HERTZ, TANGENTIAL_HISTORY, L);
+        make_system(&s, 5e6, 0.45, 2500, 0.5, 0.5, normal_hertz, tangential_history, L);
         s.dt = 1e-4;
         const double p[3] = {0.001, -0.002, 0.003}, n3[3] = {1, 2, 2};
         add_symmetry(&s, p, n3);
@@ -239,7 +239,7 @@ int main(void)
     }
     { /* 2b. a corner of two planes */
         dem_system s;
-        make_system(&s, 5e6, 0.45, 2500, 0.5, 0.5, NORMAL_HERTZ, TANGENTIAL_HISTORY, L);
+        make_system(&s, 5e6, 0.45, 2500, 0.5, 0.5, normal_hertz, tangential_history, L);
         s.dt = 1e-4;
         const double px[3] = {L, 0, 0}, nx[3] = {-1, 0, 0}, py[3] = {0, L, 0}, ny[3] = {0, -1, 0};
         add_symmetry(&s, px, nx);

@@ -23,7 +23,7 @@ static void bounded_plane(void)
 {
     for (int inside = 0; inside <= 1; inside++) {
         dem_system s;
-        make_system(&s, 5e6, 0.45, 2500, 0.5, 0.3, NORMAL_HERTZ, TANGENTIAL_HISTORY, 0.1);
+        make_system(&s, 5e6, 0.45, 2500, 0.5, 0.3, normal_hertz, tangential_history, 0.1);
         s.gravity[2] = -9.81;
         wall *w = add_wall(&s);
         w->kind = WALL_PLANE;
@@ -49,7 +49,7 @@ static void box(void)
 {
     const double L = 0.005;
     dem_system s;
-    make_system(&s, 5e6, 0.45, 2500, 1.0, 0.0, NORMAL_HERTZ, TANGENTIAL_NONE, 2 * L);
+    make_system(&s, 5e6, 0.45, 2500, 1.0, 0.0, normal_hertz, tangential_none, 2 * L);
     for (int k = 0; k < 6; k++) {   /* the six faces, as case.c builds a box wall */
         wall *w = add_wall(&s);
         w->kind = WALL_PLANE;
@@ -88,7 +88,7 @@ static void box(void)
 static double radial_impact(int kind)
 {
     dem_system s;
-    make_system(&s, 5e6, 0.45, 2500, 0.7, 0.0, NORMAL_HERTZ, TANGENTIAL_NONE, 0.1);
+    make_system(&s, 5e6, 0.45, 2500, 0.7, 0.0, normal_hertz, tangential_none, 0.1);
     wall *w = add_wall(&s);
     const double r = 1e-3, R = 0.02, v = 0.5;
     if (kind == 0) {             /* plane x = R, normal -x */
@@ -127,7 +127,7 @@ static double periodic_collision(double shift)
 {
     const double L = 0.01, r = 1e-3;
     dem_system s;
-    make_system(&s, 5e6, 0.45, 2500, 0.6, 0.3, NORMAL_HERTZ, TANGENTIAL_HISTORY, L);
+    make_system(&s, 5e6, 0.45, 2500, 0.6, 0.3, normal_hertz, tangential_history, L);
     s.periodic[0] = s.periodic[1] = s.periodic[2] = 1;
     double xa = -1.5 * r + shift, xb = 1.5 * r + shift;
     if (xb >= L) xb -= 2 * L;
@@ -146,7 +146,7 @@ static double periodic_collision(double shift)
 static void external_force(void)
 {
     dem_system s;
-    make_system(&s, 5e6, 0.45, 2500, 0.5, 0.5, NORMAL_HERTZ, TANGENTIAL_HISTORY, 1.0);
+    make_system(&s, 5e6, 0.45, 2500, 0.5, 0.5, normal_hertz, tangential_history, 1.0);
     const int i = add_sphere(&s, 0, 0, 0, 0, 0, 0, 1e-3);
     s.p.f_ext[i][0] = 2e-6;   /* N */
     s.dt = 1e-5;

@@ -3,6 +3,9 @@
  * historic maximum overlap and follows k2 = kappa21 k1 down to the plastic overlap; below it
  * the force turns tensile down to the adhesion branch -k_c delta^c_ex. History: the maximum
  * plastic overlap delta_p,max of the contact (1 double), forgotten when the contact ends.
+ * Parameters per interaction: unloadingRatio kappa21 (> 1, required), surfaceEnergy gamma_s
+ * [J/m^2] (0), loadingExponent d_ex (1.5), adhesionExponent c_ex (1.5), tensionThreshold F_0 [N]
+ * (0); the time-step check shortens the elastic contact time by sqrt(kappa21).
  *
  * Choices where the note is open:
  *  - eq. 8 calls e_log the common logarithm of the restitution; we use the natural one, the only
@@ -18,26 +21,49 @@
 
 #include <math.h>
 #include "../materials.h"
-#include "contact.h"
 
-/* delta: overlap; a: contact radius (contact_radius_sq_*, eq. 5); hist: delta_p,max. */
-static inline normal_result normal_edinburgh(const pair_coeffs *c, double delta, double r_eff,
-                                             double m_eff, double vn, double a, double fn_floor,
-                                             double *restrict hist)
+/* Parameters per interaction (keys in edinburgh_param_table), then the derived lambda. */
+typedef struct edinburgh_params {
+    double kappa21;     /* k2/k1 > 1 [-] (eq. 1) */
+    double gamma_s;     /* surface energy [J/m^2] (eq. 5) */
+    double d_ex;        /* loading exponent >= 1 [-] (eq. 2) */
+    double c_ex;        /* adhesion exponent > 0 [-] (eq. 2) */
+    double f0;          /* tension threshold F_0 [N] (eq. 9) */
+    double lambda;      /* (1 - 1/kappa21)^(1/d_ex) (eq. 3), derived */
+} edinburgh_params;
+_Static_assert(sizeof(edinburgh_params) <= MODEL_VALUES * sizeof(double), "edinburgh_params too large");
+
+static const model_param edinburgh_param_table[] = {
+    {"unloadingRatio", "-", NAN, -1e300, 1e6, offsetof(edinburgh_params, kappa21)},
+    {"surfaceEnergy", "J/m^2", 0.0, 0.0, 1e3, offsetof(edinburgh_params, gamma_s)},
+    {"loadingExponent", "-", 1.5, 1.0, 3.0, offsetof(edinburgh_params, d_ex)},
+    {"adhesionExponent", "-", 1.5, 1e-3, 3.0, offsetof(edinburgh_params, c_ex)},
+    {"tensionThreshold", "N", 0.0, -1e6, 1e6, offsetof(edinburgh_params, f0)},
+};
+
+/* k1 of eq. 1: 2 Y* R* for a linear loading branch, 4/3 Y* sqrt(R*) otherwise */
+static inline double edinburgh_k1(const pair_coeffs *c, const edinburgh_params *p, double r_eff)
 {
-    const pair_model_params *m = &c->m;
-    const double d_ex = m->loading_exponent, c_ex = m->adhesion_exponent, xi = 1.0 / d_ex;   /* eq. 2 */
-    const double k1 = d_ex == 1.0 ? 2.0 * c->Y_eff * r_eff                              /* eq. 1 */
-                                  : 4.0 / 3.0 * c->Y_eff * sqrt(r_eff);
-    const double k2 = k1 * m->unloading_ratio;                                          /* eq. 1 */
+    return p->d_ex == 1.0 ? 2.0 * c->Y_eff * r_eff : 4.0 / 3.0 * c->Y_eff * sqrt(r_eff);
+}
+
+/* k->a2: the contact radius squared (eq. 5); h: delta_p,max (1 double). */
+static inline normal_result normal_edinburgh_force(const contact *k, const pair_coeffs *c,
+                                                   const contact_models *m, double *restrict h)
+{
+    const edinburgh_params *p = MODEL_PARAMS(c, SLOT_NORMAL, edinburgh_params);
+    const double delta = k->delta, a = sqrt(k->a2);
+    const double d_ex = p->d_ex, c_ex = p->c_ex, xi = 1.0 / d_ex;                       /* eq. 2 */
+    const double k1 = edinburgh_k1(c, p, k->r_eff);                                     /* eq. 1 */
+    const double k2 = k1 * p->kappa21;                                                  /* eq. 1 */
     const double delta_d = pow(delta, d_ex), delta_c = pow(delta, c_ex);                /* eq. 2 */
-    const double delta_p = c->edinburgh_lambda * delta;                                 /* eq. 3 */
-    const double delta_pmax = hist[0] > delta_p ? hist[0] : delta_p;                    /* eq. 3 */
-    hist[0] = delta_pmax;
+    const double delta_p = p->lambda * delta;                                           /* eq. 3 */
+    const double delta_pmax = h[0] > delta_p ? h[0] : delta_p;                          /* eq. 3 */
+    h[0] = delta_pmax;
     const double delta_pmax_d = pow(delta_pmax, d_ex);                                  /* eq. 4 */
     const double f_tmp = k2 * (delta_d - delta_pmax_d);                                 /* eq. 4 */
 
-    double f_min = 1.5 * M_PI * m->surface_energy * a;                                  /* eq. 5 */
+    double f_min = 1.5 * M_PI * p->gamma_s * a;                                         /* eq. 5 */
     double delta_min;
     if (f_min > 0.5 * k2 * delta_pmax_d) {                                              /* eq. 6, limit */
         f_min = 0.5 * k2 * delta_pmax_d;
@@ -51,16 +77,49 @@ static inline normal_result normal_edinburgh(const pair_coeffs *c, double delta,
     const double f_el = f_tmp >= f_load ? f_load : (f_tmp > f_adh ? f_tmp : f_adh);     /* eq. 7 */
 
     const double pi_over_log_e = M_PI / c->log_e;                       /* e = 1: -inf, gamma 0 */
-    const double gamma_n = sqrt(4.0 * m_eff * k1 / (1.0 + pi_over_log_e * pi_over_log_e));  /* eq. 8 */
-    const double fn = f_el - gamma_n * vn + m->tension_threshold;                       /* eq. 8, 9 */
+    const double gamma_n = sqrt(4.0 * k->m_eff * k1 / (1.0 + pi_over_log_e * pi_over_log_e));  /* eq. 8 */
 
     normal_result r;
-    r.fn = fn > fn_floor ? fn : fn_floor;                                               /* eq. 9, F_n >= 0 */
+    r.fn = f_el - gamma_n * k->vn + p->f0;                                              /* eq. 8, 9 */
     r.kn = k1 * d_ex * (delta > 0.0 ? delta_d / delta : 0.0);
     r.fn_spring = f_el;
-    r.kt = 8.0 * c->G_eff * sqrt(r_eff * delta);
+    r.kt = 8.0 * c->G_eff * sqrt(k->r_eff * delta);
     r.gammat = 0.0;
+    r.active = 1;
     return r;
 }
+
+/* Elastic impact on F = k1 delta^d (eq. 1), 2 (delta_max / v) int_0^1 dx / sqrt(1 - x^(d+1)),
+ * shortened by sqrt(kappa21) for the stiffer unloading branch. */
+static inline double edinburgh_contact_time(const pair_coeffs *c, const contact_models *m, double r_eff,
+                                            double m_eff, double v)
+{
+    const edinburgh_params *p = MODEL_PARAMS(c, SLOT_NORMAL, edinburgh_params);
+    const double d = p->d_ex, k1 = edinburgh_k1(c, p, r_eff);
+    const double delta_max = pow((d + 1.0) * m_eff * v * v / (2.0 * k1), 1.0 / (d + 1.0));
+    const double integral = sqrt(M_PI) * tgamma(1.0 + 1.0 / (d + 1.0)) / tgamma(0.5 + 1.0 / (d + 1.0));
+    return 2.0 * delta_max / v * integral / sqrt(p->kappa21);
+}
+
+static inline const char *edinburgh_check(const double *values, const char **key)
+{
+    const edinburgh_params *p = (const edinburgh_params *)values;
+    *key = "unloadingRatio";
+    return p->kappa21 > 1.0 ? NULL
+        : "kappa21 = k2/k1 must exceed 1: with k2 <= k1 the plastic overlap of seed 002 eq. 3 is undefined";
+}
+
+static inline void edinburgh_prepare(double *values)
+{
+    edinburgh_params *p = (edinburgh_params *)values;
+    p->lambda = pow(1.0 - 1.0 / p->kappa21, 1.0 / p->d_ex);                            /* eq. 3 */
+}
+
+static const contact_model normal_edinburgh_model = {
+    .slot = SLOT_NORMAL, .name = "edinburgh", .history = 1, .needs_contact_radius = 1,
+    .params = edinburgh_param_table, .nparams = 5,
+    .check = edinburgh_check, .prepare = edinburgh_prepare,
+    .contact_time = edinburgh_contact_time, .contact_time_name = "edinburgh unloading",
+};
 
 #endif

@@ -3,31 +3,48 @@
  *   kn = 4/3 Y* sqrt(R* d),  kt = 8 G* sqrt(R* d),
  *   gamma_n = -2 sqrt(5/6) beta sqrt(2 Y* sqrt(R* d) m*),  gamma_t likewise with kt,
  *   Fn = kn d - gamma_n vn          (vn < 0 while approaching),
- * and with limitForce Fn >= 0 (fn_floor 0; else -inf). */
+ * and with limitForce Fn >= 0. Parameters: the interaction's restitution e
+ * (beta = ln e / sqrt(ln^2 e + pi^2)); no history. */
 #ifndef DEM_NORMAL_HERTZ_H
 #define DEM_NORMAL_HERTZ_H
 
 #include <math.h>
 #include "../materials.h"
-#include "contact.h"
 
-static inline normal_result normal_hertz(const pair_coeffs *c, double delta, double r_eff,
-                                         double m_eff, double vn, double fn_floor)
+/* The Hertz stiffnesses and dashpots at contact radius a (hertz: a = sqrt(R* delta); the
+ * adhesive models use them with their own a); fills kn, kt, gammat and returns gamma_n. */
+static inline double hertz_stiffness_damping(const pair_coeffs *c, double a, double m_eff, normal_result *r)
 {
     const double sqrt_five_sixths = 0.91287092917527685576;
-    const double a = sqrt(r_eff * delta);                  /* contact radius */
     const double sn = 2.0 * c->Y_eff * a;
-    const double st = 8.0 * c->G_eff * a;
-    const double kn = (2.0 / 3.0) * sn;
     const double gamma_n = -2.0 * sqrt_five_sixths * c->beta * sqrt(sn * m_eff);
-    const double fn = kn * delta - gamma_n * vn;
+    r->kn = (2.0 / 3.0) * sn;
+    r->kt = 8.0 * c->G_eff * a;
+    r->gammat = gamma_n * c->sqrt_st_over_sn;    /* sqrt(st m*) = sqrt(sn m*) sqrt(st/sn) */
+    r->active = 1;
+    return gamma_n;
+}
+
+static inline normal_result normal_hertz_force(const contact *k, const pair_coeffs *c,
+                                               const contact_models *m, double *restrict h)
+{
     normal_result r;
-    r.fn = fn > fn_floor ? fn : fn_floor;
-    r.kn = kn;
-    r.fn_spring = kn * delta;
-    r.kt = st;
-    r.gammat = gamma_n * c->sqrt_st_over_sn;    /* sqrt(st m*) = sqrt(sn m*) sqrt(st/sn) */
+    const double gamma_n = hertz_stiffness_damping(c, sqrt(k->r_eff * k->delta), k->m_eff, &r);
+    r.fn_spring = r.kn * k->delta;
+    r.fn = r.fn_spring - gamma_n * k->vn;
     return r;
 }
+
+/* Duration of an elastic Hertz impact at relative speed v: 2.87 (m*^2 / (R* Y*^2 v))^(1/5). */
+static inline double hertz_contact_time(const pair_coeffs *c, const contact_models *m, double r_eff,
+                                        double m_eff, double v)
+{
+    return 2.87 * pow(m_eff * m_eff / (r_eff * c->Y_eff * c->Y_eff * v), 0.2);
+}
+
+static const contact_model normal_hertz_model = {
+    .slot = SLOT_NORMAL, .name = "hertz",
+    .contact_time = hertz_contact_time, .contact_time_name = "Hertz",
+};
 
 #endif

@@ -2,37 +2,59 @@
  * velocity V (the Hertz peak overlap at V gives the same peak force):
  *   kn = 16/15 sqrt(R*) Y* (15 m* V^2 / (16 sqrt(R*) Y*))^(1/5),  kt = kn,
  *   gamma_n = sqrt(4 m* kn / (1 + (pi / ln e)^2)),  gamma_t = gamma_n,
- *   Fn = kn d - gamma_n vn, and with limitForce Fn >= 0 (fn_floor 0; else -inf).
+ *   Fn = kn d - gamma_n vn, and with limitForce Fn >= 0.
  * For the linear oscillator this damping gives exactly restitution e when the contact ends at
- * zero overlap. */
+ * zero overlap. Case-wide setting in contactModels: characteristicVelocity V [m/s], required. */
 #ifndef DEM_NORMAL_HOOKE_H
 #define DEM_NORMAL_HOOKE_H
 
 #include <math.h>
+#include "../dict.h"
 #include "../materials.h"
-#include "contact.h"
 
-static inline double hooke_stiffness(const pair_coeffs *c, double r_eff, double m_eff, double v_char)
+typedef struct hooke_case {
+    double characteristic_velocity;   /* V [m/s] */
+} hooke_case;
+_Static_assert(sizeof(hooke_case) <= MODEL_VALUES * sizeof(double), "hooke_case too large");
+
+static inline double hooke_stiffness(const pair_coeffs *c, const contact_models *m, double r_eff, double m_eff)
 {
+    const double v_char = MODEL_CASE(m, SLOT_NORMAL, hooke_case)->characteristic_velocity;
     const double sr = sqrt(r_eff);
     return 16.0 / 15.0 * sr * c->Y_eff * pow(15.0 * m_eff * v_char * v_char / (16.0 * sr * c->Y_eff), 0.2);
 }
 
-static inline normal_result normal_hooke(const pair_coeffs *c, double delta, double r_eff,
-                                         double m_eff, double vn, double v_char,
-                                         double fn_floor)
+static inline normal_result normal_hooke_force(const contact *k, const pair_coeffs *c,
+                                               const contact_models *m, double *restrict h)
 {
-    const double kn = hooke_stiffness(c, r_eff, m_eff, v_char);
+    const double kn = hooke_stiffness(c, m, k->r_eff, k->m_eff);
     const double pi_over_log_e = M_PI / c->log_e;   /* e = 1: -inf, gamma_n = 0 */
-    const double gamma_n = sqrt(4.0 * m_eff * kn / (1.0 + pi_over_log_e * pi_over_log_e));
+    const double gamma_n = sqrt(4.0 * k->m_eff * kn / (1.0 + pi_over_log_e * pi_over_log_e));
     normal_result r;
-    const double fn = kn * delta - gamma_n * vn;
-    r.fn = fn > fn_floor ? fn : fn_floor;
+    r.fn_spring = kn * k->delta;
+    r.fn = r.fn_spring - gamma_n * k->vn;
     r.kn = kn;
-    r.fn_spring = kn * delta;
     r.kt = kn;
     r.gammat = gamma_n;
+    r.active = 1;
     return r;
 }
+
+/* Half period of the undamped linear spring, pi sqrt(m* / kn). */
+static inline double hooke_contact_time(const pair_coeffs *c, const contact_models *m, double r_eff,
+                                        double m_eff, double v)
+{
+    return M_PI * sqrt(m_eff / hooke_stiffness(c, m, r_eff, m_eff));
+}
+
+static inline void hooke_read_case(const dict *d, double *values)
+{
+    ((hooke_case *)values)->characteristic_velocity = dict_scalar(d, "characteristicVelocity", 1e-6, 1e4);
+}
+
+static const contact_model normal_hooke_model = {
+    .slot = SLOT_NORMAL, .name = "hooke", .read_case = hooke_read_case,
+    .contact_time = hooke_contact_time, .contact_time_name = "linear-spring",
+};
 
 #endif

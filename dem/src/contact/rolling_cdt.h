@@ -1,22 +1,36 @@
 /* Rolling model `cdt` (constant directional torque, as LIGGGHTS' rolling cdt):
  *   M = mu_r (kn delta) R_lever w/|w|,  w = omega_i - omega_j,  minus its normal (torsion) part;
  * torque -M on i and +M on j. R_lever is R* for a pair and the contact radius R_i - delta/2
- * for a wall (as LIGGGHTS). */
+ * for a wall (as LIGGGHTS). Parameter per interaction: rollingFriction mu_r, required. */
 #ifndef DEM_ROLLING_CDT_H
 #define DEM_ROLLING_CDT_H
 
 #include <math.h>
 #include "../materials.h"
-#include "contact.h"
 
-static inline void rolling_cdt(const pair_coeffs *c, const double en[3], const double w[3],
-                               normal_result n, double lever, double torque_i[3])
+typedef struct cdt_params {
+    double mu_r;   /* rolling friction coefficient [-] */
+} cdt_params;
+
+static const model_param cdt_param_table[] = {
+    {"rollingFriction", "-", NAN, 0.0, 10.0, offsetof(cdt_params, mu_r)},
+};
+
+static inline void rolling_cdt_torque(const contact *k, const pair_coeffs *c, const contact_models *m,
+                                      normal_result n, const double w[3], double *restrict h,
+                                      double torque_i[3])
 {
+    const double *en = k->en;
     const double w_mag = sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
-    const double scale = w_mag > 0.0 ? c->m.rolling_friction * n.fn_spring * lever / w_mag : 0.0;
-    double m[3] = {scale * w[0], scale * w[1], scale * w[2]};
-    const double m_n = m[0] * en[0] + m[1] * en[1] + m[2] * en[2];
-    for (int d = 0; d < 3; d++) torque_i[d] = -(m[d] - m_n * en[d]);
+    const double mu_r = MODEL_PARAMS(c, SLOT_ROLLING, cdt_params)->mu_r;
+    const double scale = w_mag > 0.0 ? mu_r * n.fn_spring * k->rolling_lever / w_mag : 0.0;
+    double mr[3] = {scale * w[0], scale * w[1], scale * w[2]};
+    const double m_n = mr[0] * en[0] + mr[1] * en[1] + mr[2] * en[2];
+    for (int d = 0; d < 3; d++) torque_i[d] = -(mr[d] - m_n * en[d]);
 }
+
+static const contact_model rolling_cdt_model = {
+    .slot = SLOT_ROLLING, .name = "cdt", .params = cdt_param_table, .nparams = 1,
+};
 
 #endif

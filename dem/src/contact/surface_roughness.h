@@ -27,13 +27,27 @@
  *    not push it out (F . n_plane <= 0, possible at large Delta Gamma with friction or a pulling
  *    dashpot) has its normal velocity reflected, v -= 2 (v . n_plane) n_plane. In an ordinary
  *    impact the force pushes out and the guard never acts.
+ * Case-wide settings, contactModels { roughness { distribution normal | uniform; stdDev [rad];
+ * max [rad, < 1.5; normal: default min(3 stdDev, 1.5)]; seed (1); } }.
  */
 #ifndef DEM_SURFACE_ROUGHNESS_H
 #define DEM_SURFACE_ROUGHNESS_H
 
 #include <math.h>
 #include <stdint.h>
-#include "contact.h"
+#include "../dict.h"
+#include "model.h"
+
+/* Distribution of the scatter angle Delta Gamma. */
+enum scatter_distribution { SCATTER_NORMAL, SCATTER_UNIFORM };
+
+typedef struct roughness_case {
+    double distribution; /* enum scatter_distribution */
+    double std_dev;      /* normal: Delta Gamma ~ N(0, std_dev) [rad] ... */
+    double max;          /* ... truncated to |Delta Gamma| <= max; uniform: U(0, max) [rad] */
+    double seed;         /* key of the counter-based generator (an integer < 2^31) */
+} roughness_case;
+_Static_assert(sizeof(roughness_case) <= MODEL_VALUES * sizeof(double), "roughness_case too large");
 
 static inline uint64_t roughness_mix(uint64_t z)
 {
@@ -50,16 +64,16 @@ static inline double roughness_uniform(uint64_t key, uint64_t k)
 
 /* Draw the angles of a new contact. a < b: the ids (a wall is id ~k); n_ref: the normal
  * oriented from b to a. Fills h = {cos dG, dR}. */
-static inline void roughness_start(const roughness_params *rp, uint64_t a, uint64_t b, long step,
+static inline void roughness_start(const roughness_case *rp, uint64_t a, uint64_t b, long step,
                                    const double n_ref[3], double *restrict h)
 {
-    uint64_t key = roughness_mix(rp->seed + 0x9e3779b97f4a7c15ULL);
+    uint64_t key = roughness_mix((uint64_t)rp->seed + 0x9e3779b97f4a7c15ULL);
     key = roughness_mix(key ^ a);
     key = roughness_mix(key ^ b);
     key = roughness_mix(key ^ (uint64_t)step);
     double dg;
     uint64_t k = 0;
-    if (rp->distribution == SCATTER_UNIFORM) {
+    if (rp->distribution == (double)SCATTER_UNIFORM) {
         dg = rp->max * roughness_uniform(key, k++);
     } else {
         do {   /* Box-Muller; rejection keeps |dG| <= max */
@@ -80,7 +94,7 @@ static inline void roughness_start(const roughness_params *rp, uint64_t a, uint6
 
 /* Draw at the start of a contact or when the contact has slid past its asperity (radius a);
  * then add this step's sliding, |v_t| dt, v_t the contact points' relative tangential velocity. */
-static inline void roughness_update(const roughness_params *rp, uint64_t a, uint64_t b, long step,
+static inline void roughness_update(const roughness_case *rp, uint64_t a, uint64_t b, long step,
                                     const double n_ref[3], double contact_radius, double slide_speed,
                                     double dt, double *restrict h)
 {
@@ -99,5 +113,52 @@ static inline void roughness_normal(const double *restrict h, const double n[3],
     const double dr_n = h[1] * n[0] + h[2] * n[1] + h[3] * n[2];
     for (int d = 0; d < 3; d++) n_rot[d] = h[0] * n[d] + s * (h[1 + d] - dr_n * n[d]);   /* eq. 12 */
 }
+
+/* The normal the forces use: drawn or redrawn (roughness_update), then tilted (eq. 12). */
+static inline void surface_roughness_normal(const contact *k, const contact_models *m, double *restrict h,
+                                            double en_f[3])
+{
+    const roughness_case *rp = MODEL_CASE(m, SLOT_SURFACE, roughness_case);
+    const double *en = k->en, sign = k->sign;
+    const double n_ref[3] = {sign * en[0], sign * en[1], sign * en[2]};
+    const double wr[3] = {k->lever_i * k->wi[0] + k->lever_j * k->wj[0], k->lever_i * k->wi[1] + k->lever_j * k->wj[1],
+                          k->lever_i * k->wi[2] + k->lever_j * k->wj[2]};
+    const double vrn = k->vr[0] * en[0] + k->vr[1] * en[1] + k->vr[2] * en[2];
+    double vs[3];   /* sliding velocity on the true tangent plane */
+    contact_tangential_velocity(k->vr, vrn, en, wr, en, vs);
+    roughness_update(rp, k->key_lo, k->key_hi, k->step, n_ref, sqrt(k->a2),
+                     sqrt(vs[0] * vs[0] + vs[1] * vs[1] + vs[2] * vs[2]), k->dt, h);
+    roughness_normal(h, en, sign, en_f);
+}
+
+/* eq. 17 at a wall: the rough contact fails to hold the particle (v: its velocity). */
+static inline void surface_roughness_wall_guard(const contact_models *m, const double en[3], const double f[3],
+                                                double v[3])
+{
+    const double v_plane = v[0] * en[0] + v[1] * en[1] + v[2] * en[2];
+    if (v_plane < 0.0 && f[0] * en[0] + f[1] * en[1] + f[2] * en[2] <= 0.0)
+        for (int q = 0; q < 3; q++) v[q] -= 2.0 * v_plane * en[q];
+}
+
+static inline void roughness_read_case(const dict *contact_models_dict, double *values)
+{
+    const dict *r = dict_sub(contact_models_dict, "roughness");
+    static const char *const dists[] = {"normal", "uniform", 0};
+    roughness_case *rp = (roughness_case *)values;
+    rp->distribution = dict_choice(r, "distribution", dists);
+    /* angles in radians; |Delta Gamma| < pi/2 keeps the rotated normal out of the contact */
+    if (rp->distribution == (double)SCATTER_NORMAL) {
+        rp->std_dev = dict_scalar(r, "stdDev", 0.0, 1.0);
+        rp->max = dict_scalar_opt(r, "max", fmin(3.0 * rp->std_dev, 1.5), 0.0, 1.5);
+    } else {
+        rp->max = dict_scalar(r, "max", 0.0, 1.5);
+    }
+    rp->seed = (double)dict_label_opt(r, "seed", 1, 0, 2147483647L);
+}
+
+static const contact_model surface_roughness_model = {
+    .slot = SLOT_SURFACE, .name = "roughness", .history = 6, .needs_contact_radius = 1,
+    .read_case = roughness_read_case,
+};
 
 #endif

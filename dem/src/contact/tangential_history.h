@@ -8,16 +8,20 @@
  * One deliberate difference: LIGGGHTS 3.8 bounds only the spring part kt|s| by mu|Fn|, so at
  * the start of a sliding contact its dashpot adds friction beyond Coulomb (10 % more tangential
  * impulse for e = 0.5, vt/vn = 3, see tests/validation/test_oblique.c); here the whole
- * tangential force obeys |Ft| <= mu |Fn|. In sticking contacts the two agree. */
+ * tangential force obeys |Ft| <= mu |Fn|. In sticking contacts the two agree.
+ * Parameters: the interaction's friction mu; history: the spring's displacement s (3 doubles,
+ * antisymmetric: built from v_i - v_j). */
 #ifndef DEM_TANGENTIAL_HISTORY_H
 #define DEM_TANGENTIAL_HISTORY_H
 
 #include <math.h>
-#include "contact.h"
+#include "../materials.h"
 
-static inline void tangential_history(double *restrict s, const double en[3], const double vt[3],
-                                      normal_result n, double mu, double dt, double ft[3])
+static inline void tangential_history_force(const contact *k, const pair_coeffs *c, normal_result n,
+                                            const double en[3], const double vt[3], double *restrict s,
+                                            double ft[3])
 {
+    const double dt = k->dt;
     s[0] += vt[0] * dt;
     s[1] += vt[1] * dt;
     s[2] += vt[2] * dt;
@@ -28,7 +32,7 @@ static inline void tangential_history(double *restrict s, const double en[3], co
 
     for (int d = 0; d < 3; d++) ft[d] = -n.kt * s[d] - n.gammat * vt[d];
     const double ft2 = ft[0] * ft[0] + ft[1] * ft[1] + ft[2] * ft[2];
-    const double f_coulomb = mu * fabs(n.fn);
+    const double f_coulomb = c->friction * fabs(n.fn);
     if (ft2 > f_coulomb * f_coulomb) {
         const double ft_mag = sqrt(ft2);
         const double q = 1.0 / (ft_mag * n.kt);   /* one division for the ratio and 1/kt */
@@ -39,5 +43,9 @@ static inline void tangential_history(double *restrict s, const double en[3], co
         }
     }
 }
+
+static const contact_model tangential_history_model = {
+    .slot = SLOT_TANGENTIAL, .name = "history", .history = 3, .history_antisymmetric = 3,
+};
 
 #endif

@@ -1,0 +1,48 @@
+/* Normal model `dmt`: Derjaguin-Muller-Toporov adhesive elastic contact (Derjaguin, Muller and
+ * Toporov 1975, J. Colloid Interface Sci. 53, 314): the Hertz force less a constant pull acting
+ * while the bodies overlap,
+ *   F = 4/3 Y* sqrt(R*) delta^(3/2) - 2 pi W R*,
+ * W the work of adhesion; the pull-off force is 2 pi W R* (the DMT limit of stiff, small
+ * spheres, where the JKR neck does not form). No hysteresis: contact begins and ends at
+ * delta = 0. The dashpot and the tangential stiffness are hertz's. limitForce clips the whole
+ * normal force at zero, adhesion included. Parameter per interaction: workOfAdhesion W
+ * [J/m^2], required, > 0. */
+#ifndef DEM_NORMAL_DMT_H
+#define DEM_NORMAL_DMT_H
+
+#include <math.h>
+#include "../materials.h"
+#include "normal_hertz.h"
+
+typedef struct dmt_params {
+    double w;   /* work of adhesion [J/m^2] */
+} dmt_params;
+
+static const model_param dmt_param_table[] = {
+    {"workOfAdhesion", "J/m^2", NAN, 0.0, 1e3, offsetof(dmt_params, w)},
+};
+
+static inline normal_result normal_dmt_force(const contact *k, const pair_coeffs *c,
+                                             const contact_models *m, double *restrict h)
+{
+    normal_result r;
+    const double gamma_n = hertz_stiffness_damping(c, sqrt(k->r_eff * k->delta), k->m_eff, &r);
+    r.fn_spring = r.kn * k->delta - 2.0 * M_PI * MODEL_PARAMS(c, SLOT_NORMAL, dmt_params)->w * k->r_eff;
+    r.fn = r.fn_spring - gamma_n * k->vn;
+    return r;
+}
+
+static inline const char *dmt_check(const double *values, const char **key)
+{
+    *key = "workOfAdhesion";
+    return ((const dmt_params *)values)->w > 0.0 ? NULL
+        : "the dmt normal model needs a positive work of adhesion [J/m^2] (use hertz without adhesion)";
+}
+
+static const contact_model normal_dmt_model = {
+    .slot = SLOT_NORMAL, .name = "dmt",
+    .params = dmt_param_table, .nparams = 1, .check = dmt_check,
+    .contact_time = hertz_contact_time, .contact_time_name = "Hertz",
+};
+
+#endif
