@@ -158,7 +158,6 @@ static void update_void_fraction(coupling *c)
     grow_particles(c, p->n);
     for (int i = 0; i < p->n; i++) c->cell[i] = c->cell_of_id[p->id[i]];
     const int outside = cpl_vf_compute(&c->vf, &c->mesh, p->n, (const double (*)[3])p->x, p->radius, c->cell);
-    if (outside < 0) dem_fatal("coupling: the void fraction could not be computed (see above)");
     if (outside > 0 && outside != c->outside_reported) {
         dem_warning("coupling: %d particle(s) lie outside the fluid mesh at t = %g s; they feel no fluid "
                     "force and give none to the fluid", outside, c->s.time);
@@ -332,8 +331,8 @@ static void setup_particles(coupling *c, const char *case_dir, double t_start)
                       "snapshot)", base, t_start);
         c->s.time = t_start;   /* the fluid's time name, exactly */
         const int dropped = io_drop_snapshots_after(base, t_start);
-        printf("coupling: continuing from %s.h5 at t = %g s (DEM step %ld), %d particles%s\n", base,
-               c->s.time, c->s.step, c->s.p.n, dropped ? "; later snapshots dropped" : "");
+        dem_info("coupling: continuing from %s.h5 at t = %g s (DEM step %ld), %d particles%s", base, c->s.time,
+                 c->s.step, c->s.p.n, dropped ? "; later snapshots dropped" : "");
     }
     const double vmax = c->rs.max_expected_velocity > 0 ? c->rs.max_expected_velocity
                                                         : case_default_max_velocity(&c->s);
@@ -346,8 +345,7 @@ static void setup_particles(coupling *c, const char *case_dir, double t_start)
 coupling *coupling_create(const char *case_dir, cpl_mesh *mesh, double rho_f, double nu_f, double dt_f,
                           double t_start)
 {
-    coupling *c = calloc(1, sizeof *c);
-    if (!c) dem_fatal("coupling: out of memory");
+    coupling *c = dem_calloc(1, sizeof *c);
     snprintf(c->case_dir, sizeof c->case_dir, "%s", case_dir);
     c->mesh = *mesh;                       /* the session takes the mesh over */
     memset(mesh, 0, sizeof *mesh);
@@ -361,20 +359,19 @@ coupling *coupling_create(const char *case_dir, cpl_mesh *mesh, double rho_f, do
     c->params.rho_f = rho_f;
     c->params.mu_f = rho_f * nu_f;
     for (int q = 0; q < 3; q++) c->params.gravity[q] = c->s.gravity[q];
-    if (cpl_force_params_check(&c->params) != 0) dem_fatal("coupling: bad fluid parameters (see above)");
-    if (cpl_vf_init(&c->vf, &c->mesh, vf_model, alpha_min) != 0) dem_fatal("coupling: void fraction setup failed");
+    cpl_force_params_check(&c->params);
+    cpl_vf_init(&c->vf, &c->mesh, vf_model, alpha_min);
     if (vf_model == CPL_VF_GAUSSIAN) { c->vf.kernel_width = kernel_width; c->vf.kernel_cutoff = kernel_cutoff; }
-    if (c->interp_scheme != CPL_INTERP_CELL &&
-        (cpl_interp_init(&c->interp, &c->mesh, c->interp_scheme, 6) != 0 ||
-         !(c->ugp = calloc((size_t)c->mesh.ncells, sizeof *c->ugp))))
-        dem_fatal("coupling: interpolation setup failed");
+    if (c->interp_scheme != CPL_INTERP_CELL) {
+        cpl_interp_init(&c->interp, &c->mesh, c->interp_scheme, 6);
+        c->ugp = dem_calloc((size_t)c->mesh.ncells, sizeof *c->ugp);
+    }
     cpl_fluid_forces_init(&c->forces);
 
     const int nc = c->mesh.ncells;
-    c->ksl = calloc((size_t)nc, sizeof *c->ksl);
-    c->up = calloc((size_t)nc, sizeof *c->up);
-    c->source = calloc((size_t)nc, sizeof *c->source);
-    if (!c->ksl || !c->up || !c->source) dem_fatal("coupling: out of memory for %d cells", nc);
+    c->ksl = dem_calloc((size_t)nc, sizeof *c->ksl);
+    c->up = dem_calloc((size_t)nc, sizeof *c->up);
+    c->source = dem_calloc((size_t)nc, sizeof *c->source);
     update_void_fraction(c);
     if (vf_model == CPL_VF_CENTRE) warn_large_particles(c);
 
@@ -385,11 +382,11 @@ coupling *coupling_create(const char *case_dir, cpl_mesh *mesh, double rho_f, do
     if (system(cmd) != 0) dem_fatal("coupling: cannot create %s", path);
     snprintf(path, sizeof path, "%s/postProcessing/particles.dat", case_dir);
     open_means(c, path);
-    printf("coupling: %d particles, %d fluid cells; %d DEM steps of %g s per fluid step; void fraction %s "
-           "(alphaMin %g), drag %s, model %s, %s exchange, %s interpolation\n",
-           c->s.p.n, nc, c->interval, c->s.dt, vf_model == CPL_VF_CENTRE ? "centre" : vf_model == CPL_VF_DIVIDED ? "divided" : "gaussian",
-           alpha_min, cpl_drag_law_names[c->params.drag], cpl_model_type_names[c->params.model],
-           cpl_exchange_mode_names[c->params.exchange], interp_names_of(c->interp_scheme));
+    dem_info("coupling: %d particles, %d fluid cells; %d DEM steps of %g s per fluid step; void fraction %s "
+             "(alphaMin %g), drag %s, model %s, %s exchange, %s interpolation",
+             c->s.p.n, nc, c->interval, c->s.dt, vf_model == CPL_VF_CENTRE ? "centre" : vf_model == CPL_VF_DIVIDED ? "divided" : "gaussian",
+             alpha_min, cpl_drag_law_names[c->params.drag], cpl_model_type_names[c->params.model],
+             cpl_exchange_mode_names[c->params.exchange], interp_names_of(c->interp_scheme));
     return c;
 }
 
@@ -463,7 +460,7 @@ void coupling_timings(const coupling *c, double *dem_s, double *coupling_s)
 void coupling_free(coupling *c)
 {
     if (!c) return;
-    printf("coupling: wall time DEM %.2f s, coupling %.2f s\n", c->dem_seconds, c->coupling_seconds);
+    dem_info("coupling: wall time DEM %.2f s, coupling %.2f s", c->dem_seconds, c->coupling_seconds);
     io_close_writer(c->writer);
     if (c->means) fclose(c->means);
     cpl_fluid_forces_free(&c->forces);

@@ -16,7 +16,13 @@
  *                                      (model A: the particles' pressure-gradient reaction is in
  *                                      the equations, not here)
  *     coupling_write(c, time)          particles to <case>/particles.h5 / .xdmf
- *   coupling_free(c) prints the time split (DEM, coupling).
+ *   coupling_free(c) logs the time split (DEM, coupling).
+ *
+ * Errors: one policy in all of coupling/ (and dem/): an error is fatal and goes to the fatal
+ * handler of dem/src/error.h with its message (a dictionary's with "file:line" and the key);
+ * info and warning lines go to its logger. By default that prints and exits with status 1, as
+ * demRun does; the OpenFOAM adapter sets both hooks (FatalError, Info). Functions that look
+ * something up (a name, a cell) return -1 for "not found", which is no error.
  */
 #ifndef CPL_COUPLING_H
 #define CPL_COUPLING_H
@@ -35,7 +41,7 @@ enum cpl_model_type { CPL_MODEL_A, CPL_MODEL_B };
  * dt_f: the fluid time step [s], which must equal couplingInterval x the DEM timeStep. t_start:
  * the fluid's start time [s]; 0 inserts the particles of demProperties, a later time continues
  * from the snapshot of <case>/particles.h5 at that time (contacts and forces included; later
- * snapshots are dropped). Errors in the dictionaries stop the program with file, line and key. */
+ * snapshots are dropped). Errors in the dictionaries are fatal, with file, line and key. */
 coupling *coupling_create(const char *case_dir, cpl_mesh *mesh, double rho_f, double nu_f, double dt_f,
                           double t_start);
 /* 1 when the session continued from a snapshot (t_start > 0). */

@@ -1,45 +1,29 @@
 /* Per-cell K_sl, K-weighted particle velocity and explicit source; gather with the same weights
  * (see exchange.h). */
 #include <math.h>
-#include <stdio.h>
 
 #include "error.h"
 #include "exchange.h"
 
-int cpl_cell_weights_check(const cpl_cell_weights *w, int ncells, double tol)
+void cpl_cell_weights_check(const cpl_cell_weights *w, int ncells, double tol)
 {
-    if (w->start[0] != 0) {
-        fprintf(stderr, "coupling: error: cell weights: start[0] = %d, must be 0\n", w->start[0]);
-        return -1;
-    }
+    if (w->start[0] != 0) dem_fatal("coupling: cell weights: start[0] = %d, must be 0", w->start[0]);
     for (int i = 0; i < w->nparticles; i++) {
-        if (w->start[i + 1] < w->start[i]) {
-            fprintf(stderr, "coupling: error: cell weights: start decreases at particle %d (%d, then %d)\n",
-                    i, w->start[i], w->start[i + 1]);
-            return -1;
-        }
+        if (w->start[i + 1] < w->start[i])
+            dem_fatal("coupling: cell weights: start decreases at particle %d (%d, then %d)", i, w->start[i],
+                      w->start[i + 1]);
         if (w->start[i + 1] == w->start[i]) continue;   /* outside the mesh */
         double sum = 0.0;
         for (int j = w->start[i]; j < w->start[i + 1]; j++) {
-            if (w->cell[j] < 0 || w->cell[j] >= ncells) {
-                fprintf(stderr, "coupling: error: cell weights: particle %d refers to cell %d (mesh has %d)\n",
-                        i, w->cell[j], ncells);
-                return -1;
-            }
-            if (!(w->weight[j] >= 0.0) || !isfinite(w->weight[j])) {
-                fprintf(stderr, "coupling: error: cell weights: particle %d has weight %g on cell %d\n",
-                        i, w->weight[j], w->cell[j]);
-                return -1;
-            }
+            if (w->cell[j] < 0 || w->cell[j] >= ncells)
+                dem_fatal("coupling: cell weights: particle %d refers to cell %d (mesh has %d)", i, w->cell[j], ncells);
+            if (!(w->weight[j] >= 0.0) || !isfinite(w->weight[j]))
+                dem_fatal("coupling: cell weights: particle %d has weight %g on cell %d", i, w->weight[j], w->cell[j]);
             sum += w->weight[j];
         }
-        if (fabs(sum - 1.0) > tol) {
-            fprintf(stderr, "coupling: error: cell weights: particle %d's weights sum to %.17g, not 1 (tolerance %g)\n",
-                    i, sum, tol);
-            return -1;
-        }
+        if (fabs(sum - 1.0) > tol)
+            dem_fatal("coupling: cell weights: particle %d's weights sum to %.17g, not 1 (tolerance %g)", i, sum, tol);
     }
-    return 0;
 }
 
 void cpl_gather_scalar(const cpl_cell_weights *w, const double *cell_field, double *at_particle)

@@ -44,10 +44,9 @@ typedef struct cpl_cell_weights {
 } cpl_cell_weights;
 
 /* Checks the structure (non-decreasing start, cells in range, weights >= 0 summing to 1 within
- * tol for every particle that has cells):
- * 0, or -1 with a message on stderr naming the particle. Once per step at most; not needed in
- * production runs. */
-int cpl_cell_weights_check(const cpl_cell_weights *w, int ncells, double tol);
+ * tol for every particle that has cells); a violation is a fatal error naming the particle.
+ * Once per step at most; not needed in production runs. */
+void cpl_cell_weights_check(const cpl_cell_weights *w, int ncells, double tol);
 
 /* at_particle[i] = sum_c w_ic cell_field[c]: the cell values seen by each particle with the
  * same weights as the spreading (needed for exact momentum balance). */

@@ -1,10 +1,11 @@
 /* Cell-centred fields at particle positions: cell value, least-squares linear reconstruction
- * from the cell and its face neighbours, or cell-point (tetrahedra). See interpolate.h. */
+ * from the cell and its face neighbours, or cell-point (tetrahedra). See interpolate.h. Bad
+ * arguments and a shortage of memory are fatal errors (error.h). */
 #include <math.h>
-#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "error.h"
 #include "interpolate.h"
 
 int cpl_interp_scheme_parse(const char *name, enum cpl_interp_scheme *scheme)
@@ -12,10 +13,7 @@ int cpl_interp_scheme_parse(const char *name, enum cpl_interp_scheme *scheme)
     if (!strcmp(name, "cell")) *scheme = CPL_INTERP_CELL;
     else if (!strcmp(name, "cellLinear")) *scheme = CPL_INTERP_LINEAR;
     else if (!strcmp(name, "cellPoint")) *scheme = CPL_INTERP_CELL_POINT;
-    else {
-        fprintf(stderr, "interpolation '%s' unknown: use cell, cellLinear or cellPoint\n", name);
-        return -1;
-    }
+    else return -1;
     return 0;
 }
 
@@ -72,12 +70,11 @@ static void lsq_inverse(const cpl_mesh *m, int c, double inv[9])
 
 /* cellPoint: the cells around each point (through the faces of each cell) and their
  * inverse-distance weights. */
-static int point_cells(cpl_interp *ip, const cpl_mesh *m, int ncomp)
+static void point_cells(cpl_interp *ip, const cpl_mesh *m, int ncomp)
 {
     const int np = m->npoints;
-    int *count = calloc((size_t)np + 1, sizeof(int));
-    int *last = malloc((size_t)(np ? np : 1) * sizeof(int));
-    if (!count || !last) { free(count); free(last); fprintf(stderr, "interpolation: out of memory\n"); return -1; }
+    int *count = dem_calloc((size_t)np + 1, sizeof(int));
+    int *last = dem_malloc((size_t)np * sizeof(int));
     for (int pass = 0; pass < 2; pass++) {
         for (int q = 0; q < np; q++) last[q] = -1;
         for (int c = 0; c < m->ncells; c++)
@@ -93,21 +90,17 @@ static int point_cells(cpl_interp *ip, const cpl_mesh *m, int ncomp)
             }
         if (pass == 0) {
             for (int q = 0; q < np; q++) count[q + 1] += count[q];
-            ip->pc_start = malloc(((size_t)np + 1) * sizeof(int));
-            ip->pc_cell = malloc((size_t)(count[np] ? count[np] : 1) * sizeof(int));
-            ip->pc_w = malloc((size_t)(count[np] ? count[np] : 1) * sizeof(double));
-            ip->point_value = calloc((size_t)(np ? np : 1) * ncomp, sizeof(double));
-            ip->face_value = calloc((size_t)(m->nfaces ? m->nfaces : 1) * ncomp, sizeof(double));
-            if (!ip->pc_start || !ip->pc_cell || !ip->pc_w || !ip->point_value || !ip->face_value) {
-                free(count); free(last); fprintf(stderr, "interpolation: out of memory\n"); return -1;
-            }
+            ip->pc_start = dem_malloc(((size_t)np + 1) * sizeof(int));
+            ip->pc_cell = dem_malloc((size_t)count[np] * sizeof(int));
+            ip->pc_w = dem_malloc((size_t)count[np] * sizeof(double));
+            ip->point_value = dem_calloc((size_t)np * ncomp, sizeof(double));
+            ip->face_value = dem_calloc((size_t)m->nfaces * ncomp, sizeof(double));
             memcpy(ip->pc_start, count, ((size_t)np + 1) * sizeof(int));
         }
     }
     free(count); free(last);
     /* 1 / ((x_f - x_c).A_f) of each cell's faces (cell_faces order), for the pyramid choice */
-    ip->pyramid_inv = malloc((size_t)(m->cell_face_start[m->ncells] ? m->cell_face_start[m->ncells] : 1) * sizeof(double));
-    if (!ip->pyramid_inv) { fprintf(stderr, "interpolation: out of memory\n"); return -1; }
+    ip->pyramid_inv = dem_malloc((size_t)m->cell_face_start[m->ncells] * sizeof(double));
     for (int c = 0; c < m->ncells; c++)
         for (int k = m->cell_face_start[c]; k < m->cell_face_start[c + 1]; k++) {
             const double *a = m->face_area[m->cell_faces[k]], *xf = m->face_centre[m->cell_faces[k]], *xc = m->cell_centre[c];
@@ -124,7 +117,6 @@ static int point_cells(cpl_interp *ip, const cpl_mesh *m, int ncomp)
         }
         for (int k = ip->pc_start[q]; k < ip->pc_start[q + 1]; k++) ip->pc_w[k] /= sum;
     }
-    return 0;
 }
 
 /* Barycentric coordinates of x in the tetrahedron (a, b, c, d); returns the smallest. */
@@ -247,37 +239,22 @@ static void cell_point_locate(const cpl_interp *ip, const cpl_mesh *m, int c, co
     memcpy(tet->l, lb, sizeof lb);
 }
 
-int cpl_interp_init(cpl_interp *ip, const cpl_mesh *m, enum cpl_interp_scheme scheme, int ncomp)
+void cpl_interp_init(cpl_interp *ip, const cpl_mesh *m, enum cpl_interp_scheme scheme, int ncomp)
 {
     memset(ip, 0, sizeof *ip);
-    if (ncomp < 1 || ncomp > 64) {
-        fprintf(stderr, "interpolation: %d components per cell (1 .. 64)\n", ncomp);
-        return -1;
-    }
-    if (scheme != CPL_INTERP_CELL && scheme != CPL_INTERP_LINEAR && scheme != CPL_INTERP_CELL_POINT) {
-        fprintf(stderr, "interpolation: unknown scheme %d\n", (int)scheme);
-        return -1;
-    }
+    if (ncomp < 1 || ncomp > 64) dem_fatal("interpolation: %d components per cell (1 .. 64)", ncomp);
+    if (scheme != CPL_INTERP_CELL && scheme != CPL_INTERP_LINEAR && scheme != CPL_INTERP_CELL_POINT)
+        dem_fatal("interpolation: unknown scheme %d", (int)scheme);
     ip->scheme = scheme;
     ip->ncells = m->ncells;
     ip->ncomp = ncomp;
-    ip->field = calloc((size_t)m->ncells * ncomp, sizeof(double));
+    ip->field = dem_calloc((size_t)m->ncells * ncomp, sizeof(double));
     if (scheme == CPL_INTERP_LINEAR) {
-        ip->minv = calloc(m->ncells, sizeof *ip->minv);
-        ip->grad = calloc((size_t)m->ncells * ncomp * 3, sizeof(double));
-    }
-    if (!ip->field || (scheme == CPL_INTERP_LINEAR && (!ip->minv || !ip->grad))) {
-        fprintf(stderr, "interpolation: out of memory for %d cells\n", m->ncells);
-        cpl_interp_free(ip);
-        return -1;
-    }
-    if (scheme == CPL_INTERP_LINEAR)
+        ip->minv = dem_calloc(m->ncells, sizeof *ip->minv);
+        ip->grad = dem_calloc((size_t)m->ncells * ncomp * 3, sizeof(double));
         for (int c = 0; c < m->ncells; c++) lsq_inverse(m, c, ip->minv[c]);
-    if (scheme == CPL_INTERP_CELL_POINT && point_cells(ip, m, ncomp) != 0) {
-        cpl_interp_free(ip);
-        return -1;
     }
-    return 0;
+    if (scheme == CPL_INTERP_CELL_POINT) point_cells(ip, m, ncomp);
 }
 
 void cpl_interp_set_field(cpl_interp *ip, const cpl_mesh *m, const double *field)

@@ -42,11 +42,12 @@ typedef struct cpl_interp {
     double *pyramid_inv;        /* cellPoint: 1/((x_f - x_c).A_f) per cell face (cell_faces order) */
 } cpl_interp;
 
-/* name: "cell", "cellLinear" or "cellPoint". Returns 0, or -1 with a message on stderr. */
+/* name: "cell", "cellLinear" or "cellPoint". Returns 0, or -1 for another name (the caller says
+ * where it came from). */
 int cpl_interp_scheme_parse(const char *name, enum cpl_interp_scheme *scheme);
 
-/* For fields of ncomp components per cell on mesh m. Returns 0, or -1 with a message. */
-int cpl_interp_init(cpl_interp *ip, const cpl_mesh *m, enum cpl_interp_scheme scheme, int ncomp);
+/* For fields of ncomp (1 .. 64) components per cell on mesh m; other counts are a fatal error. */
+void cpl_interp_init(cpl_interp *ip, const cpl_mesh *m, enum cpl_interp_scheme scheme, int ncomp);
 void cpl_interp_free(cpl_interp *ip);
 
 /* Take a new field ([ncells][ncomp], copied) and reconstruct its gradients (cellLinear). */

@@ -1,12 +1,13 @@
 /* The fluid mesh: copy of OpenFOAM's polyMesh arrays, derived geometry (face centres and area
  * vectors as primitiveMeshFaceCentresAndAreas, cell centres and volumes as
  * primitiveMeshCellCentresAndVols), cell -> faces, and particle location (walk, then a uniform
- * grid of cells for the full search). Lengths in m, areas in m^2, volumes in m^3. */
+ * grid of cells for the full search). Lengths in m, areas in m^2, volumes in m^3.
+ * Bad input and a shortage of memory are fatal errors (error.h), as everywhere in coupling/. */
 #include <math.h>
-#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "error.h"
 #include "mesh.h"
 
 /* Private data of the full search and of the inside test. */
@@ -18,13 +19,6 @@ typedef struct mesh_search {
     double *cell_tol;           /* inside tolerance of cell c [m] */
     int walk_cap;               /* walk steps before giving up and searching */
 } mesh_search;
-
-static void *xcalloc(size_t n, size_t size)
-{
-    void *p = calloc(n ? n : 1, size);
-    if (!p) fprintf(stderr, "cpl_mesh: out of memory (%zu x %zu bytes)\n", n, size);
-    return p;
-}
 
 static void cross(const double a[3], const double b[3], double c[3])
 {
@@ -92,10 +86,9 @@ static void face_geometry(cpl_mesh *m)
 
 /* Cell centres and volumes by pyramids from an estimated centre (the face centres' average) to
  * each face. Returns -1 if a cell has a non-positive volume (faces wrongly oriented). */
-static int cell_geometry(cpl_mesh *m)
+static void cell_geometry(cpl_mesh *m)
 {
-    double (*est)[3] = xcalloc(m->ncells, sizeof *est);
-    if (!est) return -1;
+    double (*est)[3] = dem_calloc(m->ncells, sizeof *est);
     for (int c = 0; c < m->ncells; c++) {
         const int n = m->cell_face_start[c + 1] - m->cell_face_start[c];
         for (int k = m->cell_face_start[c]; k < m->cell_face_start[c + 1]; k++)
@@ -112,26 +105,21 @@ static int cell_geometry(cpl_mesh *m)
             vol3 += pyr3;
             for (int d = 0; d < 3; d++) ctr[d] += pyr3 * (0.75 * m->face_centre[f][d] + 0.25 * est[c][d]);
         }
-        if (!(vol3 > 0)) {
-            fprintf(stderr, "cpl_mesh: cell %d has a non-positive volume %g m^3 (are the face "
-                    "area vectors pointing out of their owner?)\n", c, vol3 / 3.0);
-            free(est);
-            return -1;
-        }
+        if (!(vol3 > 0))
+            dem_fatal("cpl_mesh: cell %d has a non-positive volume %g m^3 (are the face area vectors "
+                      "pointing out of their owner?)", c, vol3 / 3.0);
         for (int d = 0; d < 3; d++) m->cell_centre[c][d] = ctr[d] / vol3;
         m->cell_volume[c] = vol3 / 3.0;
     }
     free(est);
-    return 0;
 }
 
 /* Cell -> faces (CSR), from owner and neighbour. */
-static int cell_faces(cpl_mesh *m)
+static void cell_faces(cpl_mesh *m)
 {
-    m->cell_face_start = xcalloc(m->ncells + 1, sizeof(int));
-    m->cell_faces = xcalloc(m->nfaces + m->ninternal_faces, sizeof(int));
-    int *fill = xcalloc(m->ncells, sizeof(int));
-    if (!m->cell_face_start || !m->cell_faces || !fill) { free(fill); return -1; }
+    m->cell_face_start = dem_calloc(m->ncells + 1, sizeof(int));
+    m->cell_faces = dem_calloc(m->nfaces + m->ninternal_faces, sizeof(int));
+    int *fill = dem_calloc(m->ncells, sizeof(int));
     for (int f = 0; f < m->nfaces; f++) m->cell_face_start[m->owner[f] + 1]++;
     for (int f = 0; f < m->ninternal_faces; f++) m->cell_face_start[m->neighbour[f] + 1]++;
     for (int c = 0; c < m->ncells; c++) m->cell_face_start[c + 1] += m->cell_face_start[c];
@@ -145,34 +133,24 @@ static int cell_faces(cpl_mesh *m)
     }
     free(fill);
     for (int c = 0; c < m->ncells; c++)
-        if (m->cell_face_start[c + 1] - m->cell_face_start[c] < 4) {
-            fprintf(stderr, "cpl_mesh: cell %d has %d faces (a closed cell has at least 4)\n", c,
-                    m->cell_face_start[c + 1] - m->cell_face_start[c]);
-            return -1;
-        }
-    return 0;
+        if (m->cell_face_start[c + 1] - m->cell_face_start[c] < 4)
+            dem_fatal("cpl_mesh: cell %d has %d faces (a closed cell has at least 4)", c,
+                      m->cell_face_start[c + 1] - m->cell_face_start[c]);
 }
 
 /* Bounding boxes, inside tolerances and the search grid. The grid has about one mesh cell per
  * grid cell; each grid cell lists the mesh cells whose bounding box overlaps it. */
-static int build_search(cpl_mesh *m)
+static void build_search(cpl_mesh *m)
 {
     search_free(m->search);
-    m->search = NULL;
-    mesh_search *s = xcalloc(1, sizeof *s);
-    if (!s) return -1;
+    mesh_search *s = dem_calloc(1, sizeof *s);
     m->search = s;
-    s->face_inv_mag = xcalloc(m->nfaces, sizeof(double));
-    s->cell_tol = xcalloc(m->ncells, sizeof(double));
-    double (*blo)[3] = xcalloc(m->ncells, sizeof *blo), (*bhi)[3] = xcalloc(m->ncells, sizeof *bhi);
-    if (!s->face_inv_mag || !s->cell_tol || !blo || !bhi) { free(blo); free(bhi); return -1; }
+    s->face_inv_mag = dem_calloc(m->nfaces, sizeof(double));
+    s->cell_tol = dem_calloc(m->ncells, sizeof(double));
+    double (*blo)[3] = dem_calloc(m->ncells, sizeof *blo), (*bhi)[3] = dem_calloc(m->ncells, sizeof *bhi);
     for (int f = 0; f < m->nfaces; f++) {
         const double mag = sqrt(dot(m->face_area[f], m->face_area[f]));
-        if (!(mag > 0)) {
-            fprintf(stderr, "cpl_mesh: face %d has zero area\n", f);
-            free(blo); free(bhi);
-            return -1;
-        }
+        if (!(mag > 0)) dem_fatal("cpl_mesh: face %d has zero area", f);
         s->face_inv_mag[f] = 1.0 / mag;
     }
     for (int d = 0; d < 3; d++) { m->bounds_min[d] = INFINITY; m->bounds_max[d] = -INFINITY; }
@@ -207,14 +185,12 @@ static int build_search(cpl_mesh *m)
         s->inv_h[d] = s->n[d] / ext[d];
         total *= s->n[d];
     }
-    s->start = xcalloc(total + 1, sizeof(int));
-    if (!s->start) { free(blo); free(bhi); return -1; }
+    s->start = dem_calloc(total + 1, sizeof(int));
     /* two passes: count, then fill */
     for (int pass = 0; pass < 2; pass++) {
         if (pass == 1) {
             for (long g = 0; g < total; g++) s->start[g + 1] += s->start[g];
-            s->cells = xcalloc(s->start[total], sizeof(int));
-            if (!s->cells) { free(blo); free(bhi); return -1; }
+            s->cells = dem_calloc(s->start[total], sizeof(int));
         }
         for (int c = 0; c < m->ncells; c++) {
             int i0[3], i1[3];
@@ -238,95 +214,65 @@ static int build_search(cpl_mesh *m)
     }
     free(blo); free(bhi);
     s->walk_cap = 2 * (int)cbrt((double)m->ncells) + 10;
-    return 0;
 }
 
 /* Everything derived from points, faces, owner and neighbour; cell centres and volumes too
  * when compute_cells is set. */
-static int derive(cpl_mesh *m, int compute_cells)
+static void derive(cpl_mesh *m, int compute_cells)
 {
     face_geometry(m);
-    if (compute_cells && cell_geometry(m) != 0) return -1;
-    return build_search(m);
+    if (compute_cells) cell_geometry(m);
+    build_search(m);
 }
 
-static int check_input(int npoints, const double (*points)[3], int nfaces, const int *face_start,
-                       const int *face_points, int ninternal_faces, const int *owner,
-                       const int *neighbour, int ncells, const double *cell_volume)
+static void check_input(int npoints, const double (*points)[3], int nfaces, const int *face_start,
+                        const int *face_points, int ninternal_faces, const int *owner,
+                        const int *neighbour, int ncells, const double *cell_volume)
 {
-    if (npoints < 4 || nfaces < 4 || ncells < 1 || ninternal_faces < 0 || ninternal_faces > nfaces) {
-        fprintf(stderr, "cpl_mesh_init: bad sizes: %d points, %d faces (%d internal), %d cells\n",
-                npoints, nfaces, ninternal_faces, ncells);
-        return -1;
-    }
-    if (!points || !face_start || !face_points || !owner || (ninternal_faces > 0 && !neighbour)) {
-        fprintf(stderr, "cpl_mesh_init: missing array (points, faces, owner or neighbour)\n");
-        return -1;
-    }
+    if (npoints < 4 || nfaces < 4 || ncells < 1 || ninternal_faces < 0 || ninternal_faces > nfaces)
+        dem_fatal("cpl_mesh_init: bad sizes: %d points, %d faces (%d internal), %d cells", npoints, nfaces,
+                  ninternal_faces, ncells);
+    if (!points || !face_start || !face_points || !owner || (ninternal_faces > 0 && !neighbour))
+        dem_fatal("cpl_mesh_init: missing array (points, faces, owner or neighbour)");
     for (int p = 0; p < npoints; p++)
         for (int d = 0; d < 3; d++)
-            if (!isfinite(points[p][d])) {
-                fprintf(stderr, "cpl_mesh_init: point %d is not finite\n", p);
-                return -1;
-            }
-    if (face_start[0] != 0) {
-        fprintf(stderr, "cpl_mesh_init: face_start[0] = %d, must be 0\n", face_start[0]);
-        return -1;
-    }
+            if (!isfinite(points[p][d])) dem_fatal("cpl_mesh_init: point %d is not finite", p);
+    if (face_start[0] != 0) dem_fatal("cpl_mesh_init: face_start[0] = %d, must be 0", face_start[0]);
     for (int f = 0; f < nfaces; f++) {
-        if (face_start[f + 1] - face_start[f] < 3) {
-            fprintf(stderr, "cpl_mesh_init: face %d has %d points (at least 3)\n", f,
-                    face_start[f + 1] - face_start[f]);
-            return -1;
-        }
+        if (face_start[f + 1] - face_start[f] < 3)
+            dem_fatal("cpl_mesh_init: face %d has %d points (at least 3)", f, face_start[f + 1] - face_start[f]);
         for (int k = face_start[f]; k < face_start[f + 1]; k++)
-            if (face_points[k] < 0 || face_points[k] >= npoints) {
-                fprintf(stderr, "cpl_mesh_init: face %d uses point %d (there are %d)\n", f, face_points[k], npoints);
-                return -1;
-            }
-        if (owner[f] < 0 || owner[f] >= ncells) {
-            fprintf(stderr, "cpl_mesh_init: face %d has owner %d (there are %d cells)\n", f, owner[f], ncells);
-            return -1;
-        }
-        if (f < ninternal_faces && (neighbour[f] < 0 || neighbour[f] >= ncells || neighbour[f] == owner[f])) {
-            fprintf(stderr, "cpl_mesh_init: internal face %d has neighbour %d (owner %d, %d cells)\n",
-                    f, neighbour[f], owner[f], ncells);
-            return -1;
-        }
+            if (face_points[k] < 0 || face_points[k] >= npoints)
+                dem_fatal("cpl_mesh_init: face %d uses point %d (there are %d)", f, face_points[k], npoints);
+        if (owner[f] < 0 || owner[f] >= ncells)
+            dem_fatal("cpl_mesh_init: face %d has owner %d (there are %d cells)", f, owner[f], ncells);
+        if (f < ninternal_faces && (neighbour[f] < 0 || neighbour[f] >= ncells || neighbour[f] == owner[f]))
+            dem_fatal("cpl_mesh_init: internal face %d has neighbour %d (owner %d, %d cells)", f, neighbour[f],
+                      owner[f], ncells);
     }
     if (cell_volume)
         for (int c = 0; c < ncells; c++)
-            if (!(cell_volume[c] > 0)) {
-                fprintf(stderr, "cpl_mesh_init: cell %d has volume %g m^3\n", c, cell_volume[c]);
-                return -1;
-            }
-    return 0;
+            if (!(cell_volume[c] > 0)) dem_fatal("cpl_mesh_init: cell %d has volume %g m^3", c, cell_volume[c]);
 }
 
-int cpl_mesh_init(cpl_mesh *m, int npoints, const double (*points)[3], int nfaces, const int *face_start,
-                  const int *face_points, int ninternal_faces, const int *owner, const int *neighbour,
-                  int ncells, const double (*cell_centre)[3], const double *cell_volume)
+void cpl_mesh_init(cpl_mesh *m, int npoints, const double (*points)[3], int nfaces, const int *face_start,
+                   const int *face_points, int ninternal_faces, const int *owner, const int *neighbour,
+                   int ncells, const double (*cell_centre)[3], const double *cell_volume)
 {
     memset(m, 0, sizeof *m);
-    if (check_input(npoints, points, nfaces, face_start, face_points, ninternal_faces, owner, neighbour,
-                    ncells, cell_volume) != 0)
-        return -1;
+    check_input(npoints, points, nfaces, face_start, face_points, ninternal_faces, owner, neighbour, ncells,
+                cell_volume);
     m->npoints = npoints; m->nfaces = nfaces; m->ninternal_faces = ninternal_faces; m->ncells = ncells;
     const int nfp = face_start[nfaces];
-    m->points = xcalloc(npoints, sizeof *m->points);
-    m->face_start = xcalloc(nfaces + 1, sizeof(int));
-    m->face_points = xcalloc(nfp, sizeof(int));
-    m->owner = xcalloc(nfaces, sizeof(int));
-    m->neighbour = xcalloc(ninternal_faces, sizeof(int));
-    m->cell_centre = xcalloc(ncells, sizeof *m->cell_centre);
-    m->cell_volume = xcalloc(ncells, sizeof(double));
-    m->face_centre = xcalloc(nfaces, sizeof *m->face_centre);
-    m->face_area = xcalloc(nfaces, sizeof *m->face_area);
-    if (!m->points || !m->face_start || !m->face_points || !m->owner || !m->neighbour || !m->cell_centre ||
-        !m->cell_volume || !m->face_centre || !m->face_area) {
-        cpl_mesh_free(m);
-        return -1;
-    }
+    m->points = dem_calloc(npoints, sizeof *m->points);
+    m->face_start = dem_calloc(nfaces + 1, sizeof(int));
+    m->face_points = dem_calloc(nfp, sizeof(int));
+    m->owner = dem_calloc(nfaces, sizeof(int));
+    m->neighbour = dem_calloc(ninternal_faces, sizeof(int));
+    m->cell_centre = dem_calloc(ncells, sizeof *m->cell_centre);
+    m->cell_volume = dem_calloc(ncells, sizeof(double));
+    m->face_centre = dem_calloc(nfaces, sizeof *m->face_centre);
+    m->face_area = dem_calloc(nfaces, sizeof *m->face_area);
     memcpy(m->points, points, npoints * sizeof *m->points);
     memcpy(m->face_start, face_start, (nfaces + 1) * sizeof(int));
     memcpy(m->face_points, face_points, nfp * sizeof(int));
@@ -337,17 +283,14 @@ int cpl_mesh_init(cpl_mesh *m, int npoints, const double (*points)[3], int nface
         memcpy(m->cell_centre, cell_centre, ncells * sizeof *m->cell_centre);
         memcpy(m->cell_volume, cell_volume, ncells * sizeof(double));
     }
-    if (cell_faces(m) != 0 || derive(m, !given) != 0) {
-        cpl_mesh_free(m);
-        return -1;
-    }
-    return 0;
+    cell_faces(m);
+    derive(m, !given);
 }
 
-int cpl_mesh_map_points(cpl_mesh *m, void (*map)(double x[3], void *ctx), void *ctx)
+void cpl_mesh_map_points(cpl_mesh *m, void (*map)(double x[3], void *ctx), void *ctx)
 {
     for (int p = 0; p < m->npoints; p++) map(m->points[p], ctx);
-    return derive(m, 1);
+    derive(m, 1);
 }
 
 /* How far x lies outside face f of cell c, along the outward normal [m] (negative inside). */
@@ -440,17 +383,14 @@ static int lattice_face_cmp(const void *pa, const void *pb)
 /* Build a mesh from cells given as boxes [b0, b1) x [b2, b3) x [b4, b5) of a lattice of L[0] x
  * L[1] x L[2] units spanning lo..hi. Faces are the rectangles where two cells touch (or a cell
  * touches the domain side), with every lattice vertex on their perimeter among their points. */
-static int build_lattice(cpl_mesh *m, const double lo[3], const double hi[3], const int L[3], int nc,
-                         const int (*box)[6])
+static void build_lattice(cpl_mesh *m, const double lo[3], const double hi[3], const int L[3], int nc,
+                          const int (*box)[6])
 {
     const long nl = (long)L[0] * L[1] * L[2];
     const long np = (long)(L[0] + 1) * (L[1] + 1) * (L[2] + 1);
-    int *at = xcalloc(nl, sizeof(int)), *vid = xcalloc(np, sizeof(int));
+    int *at = dem_calloc(nl, sizeof(int)), *vid = dem_calloc(np, sizeof(int));
     lattice_face *faces = NULL;
-    int *nbr = NULL, nfaces = 0, cap = 0, rc = -1;
-    int *face_start = NULL, *face_points = NULL, *owner = NULL, *neighbour = NULL;
-    double (*points)[3] = NULL;
-    if (!at || !vid) goto done;
+    int nfaces = 0, cap = 0;
 #define LAT(i, j, k) ((i) + (long)L[0] * ((j) + (long)L[1] * (k)))
 #define VTX(i, j, k) ((i) + (long)(L[0] + 1) * ((j) + (long)(L[1] + 1) * (k)))
     for (long q = 0; q < nl; q++) at[q] = -1;
@@ -466,9 +406,8 @@ static int build_lattice(cpl_mesh *m, const double lo[3], const double hi[3], co
     int npts = 0;
     for (long q = 0; q < np; q++)
         if (vid[q] > 0) vid[q] = npts++;
-    points = xcalloc(npts, sizeof *points);
-    nbr = xcalloc(nl, sizeof(int));
-    if (!points || !nbr) goto done;
+    double (*points)[3] = dem_calloc(npts, sizeof *points);
+    int *nbr = dem_calloc(nl, sizeof(int));
     for (int k = 0; k <= L[2]; k++)
         for (int j = 0; j <= L[1]; j++)
             for (int i = 0; i <= L[0]; i++) {
@@ -502,9 +441,7 @@ static int build_lattice(cpl_mesh *m, const double lo[3], const double hi[3], co
                 if (n >= 0 && n < c) continue;
                 if (nfaces == cap) {
                     cap = cap ? 2 * cap : 1024;
-                    lattice_face *grown = realloc(faces, cap * sizeof *faces);
-                    if (!grown) { fprintf(stderr, "cpl_mesh: out of memory\n"); goto done; }
-                    faces = grown;
+                    faces = dem_realloc(faces, cap * sizeof *faces);
                 }
                 lattice_face *F = &faces[nfaces];
                 F->owner = c; F->neighbour = n; F->side = side; F->plane = plane; F->seq = nfaces;
@@ -525,14 +462,13 @@ static int build_lattice(cpl_mesh *m, const double lo[3], const double hi[3], co
     while (ninternal < nfaces && faces[ninternal].neighbour >= 0) ninternal++;
     /* face points: walk the rectangle's perimeter counter-clockwise in (u, v), which gives the
      * normal +a (e_u x e_v = e_a); reversed on a minus side, so it points out of the owner */
-    face_start = xcalloc(nfaces + 1, sizeof(int));
-    owner = xcalloc(nfaces, sizeof(int));
-    neighbour = xcalloc(ninternal, sizeof(int));
+    int *face_start = dem_calloc(nfaces + 1, sizeof(int));
+    int *owner = dem_calloc(nfaces, sizeof(int));
+    int *neighbour = dem_calloc(ninternal, sizeof(int));
     long perim = 0;
     for (int f = 0; f < nfaces; f++)
         perim += 2L * (faces[f].u1 - faces[f].u0 + faces[f].v1 - faces[f].v0);
-    face_points = xcalloc(perim, sizeof(int));
-    if (!face_start || !owner || !neighbour || !face_points) goto done;
+    int *face_points = dem_calloc(perim, sizeof(int));
     int nfp = 0;
     for (int f = 0; f < nfaces; f++) {
         const lattice_face *F = &faces[f];
@@ -560,55 +496,44 @@ static int build_lattice(cpl_mesh *m, const double lo[3], const double hi[3], co
     }
 #undef LAT
 #undef VTX
-    rc = cpl_mesh_init(m, npts, (const double (*)[3])points, nfaces, face_start, face_points, ninternal,
-                       owner, neighbour, nc, NULL, NULL);
-done:
+    cpl_mesh_init(m, npts, (const double (*)[3])points, nfaces, face_start, face_points, ninternal, owner,
+                  neighbour, nc, NULL, NULL);
     free(at); free(vid); free(faces); free(nbr); free(points);
     free(face_start); free(face_points); free(owner); free(neighbour);
-    return rc;
 }
 
-static int check_box_args(const char *who, const double lo[3], const double hi[3], int nx, int ny, int nz)
+static void check_box_args(const char *who, const double lo[3], const double hi[3], int nx, int ny, int nz)
 {
-    if (nx < 1 || ny < 1 || nz < 1 || (long)nx * ny * nz > 100000000L) {
-        fprintf(stderr, "%s: bad cell counts %d x %d x %d\n", who, nx, ny, nz);
-        return -1;
-    }
+    if (nx < 1 || ny < 1 || nz < 1 || (long)nx * ny * nz > 100000000L)
+        dem_fatal("%s: bad cell counts %d x %d x %d", who, nx, ny, nz);
     for (int d = 0; d < 3; d++)
-        if (!(hi[d] > lo[d])) {
-            fprintf(stderr, "%s: empty box: lo[%d] = %g m, hi[%d] = %g m\n", who, d, lo[d], d, hi[d]);
-            return -1;
-        }
-    return 0;
+        if (!(hi[d] > lo[d])) dem_fatal("%s: empty box: lo[%d] = %g m, hi[%d] = %g m", who, d, lo[d], d, hi[d]);
 }
 
-int cpl_mesh_box(cpl_mesh *m, const double lo[3], const double hi[3], int nx, int ny, int nz)
+void cpl_mesh_box(cpl_mesh *m, const double lo[3], const double hi[3], int nx, int ny, int nz)
 {
     memset(m, 0, sizeof *m);
-    if (check_box_args("cpl_mesh_box", lo, hi, nx, ny, nz) != 0) return -1;
+    check_box_args("cpl_mesh_box", lo, hi, nx, ny, nz);
     const int L[3] = {nx, ny, nz};
     const int nc = nx * ny * nz;
-    int (*box)[6] = xcalloc(nc, sizeof *box);
-    if (!box) return -1;
+    int (*box)[6] = dem_calloc(nc, sizeof *box);
     for (int k = 0; k < nz; k++)
         for (int j = 0; j < ny; j++)
             for (int i = 0; i < nx; i++) {
                 int *b = box[i + nx * (j + ny * k)];
                 b[0] = i; b[1] = i + 1; b[2] = j; b[3] = j + 1; b[4] = k; b[5] = k + 1;
             }
-    const int rc = build_lattice(m, lo, hi, L, nc, (const int (*)[6])box);
+    build_lattice(m, lo, hi, L, nc, (const int (*)[6])box);
     free(box);
-    return rc;
 }
 
-int cpl_mesh_box_refined(cpl_mesh *m, const double lo[3], const double hi[3], int nx, int ny, int nz,
-                         const int rlo[3], const int rhi[3])
+void cpl_mesh_box_refined(cpl_mesh *m, const double lo[3], const double hi[3], int nx, int ny, int nz,
+                          const int rlo[3], const int rhi[3])
 {
     memset(m, 0, sizeof *m);
-    if (check_box_args("cpl_mesh_box_refined", lo, hi, nx, ny, nz) != 0) return -1;
+    check_box_args("cpl_mesh_box_refined", lo, hi, nx, ny, nz);
     const int L[3] = {2 * nx, 2 * ny, 2 * nz};
-    int (*box)[6] = xcalloc(8L * nx * ny * nz, sizeof *box);
-    if (!box) return -1;
+    int (*box)[6] = dem_calloc(8L * nx * ny * nz, sizeof *box);
     int nc = 0;
     for (int k = 0; k < nz; k++)
         for (int j = 0; j < ny; j++)
@@ -623,7 +548,6 @@ int cpl_mesh_box_refined(cpl_mesh *m, const double lo[3], const double hi[3], in
                     b[4] = 2 * k + w * o[2]; b[5] = b[4] + w;
                 }
             }
-    const int rc = build_lattice(m, lo, hi, L, nc, (const int (*)[6])box);
+    build_lattice(m, lo, hi, L, nc, (const int (*)[6])box);
     free(box);
-    return rc;
 }

@@ -28,10 +28,11 @@ typedef struct cpl_mesh {
 } cpl_mesh;
 
 /* Copy the arrays (the caller keeps its own) and derive the rest. cell_centre / cell_volume may
- * be NULL: then they are computed from the faces. Returns 0, or -1 with a message on stderr. */
-int cpl_mesh_init(cpl_mesh *m, int npoints, const double (*points)[3], int nfaces, const int *face_start,
-                  const int *face_points, int ninternal_faces, const int *owner, const int *neighbour,
-                  int ncells, const double (*cell_centre)[3], const double *cell_volume);
+ * be NULL: then they are computed from the faces. Bad arrays (sizes, indices out of range, a
+ * cell that is not closed or has no volume) are a fatal error naming them (error.h). */
+void cpl_mesh_init(cpl_mesh *m, int npoints, const double (*points)[3], int nfaces, const int *face_start,
+                   const int *face_points, int ninternal_faces, const int *owner, const int *neighbour,
+                   int ncells, const double (*cell_centre)[3], const double *cell_volume);
 void cpl_mesh_free(cpl_mesh *m);
 
 /* 1 if x lies inside cell c (on the inner side of every face plane; OpenFOAM cells are taken as
@@ -44,7 +45,7 @@ int cpl_mesh_locate(const cpl_mesh *m, const double x[3], int guess, int *search
 
 /* A box mesh of nx x ny x nz hex cells in OpenFOAM's ordering (internal faces first, owner <
  * neighbour, boundary faces after), for tests and for the tutorials' checks. */
-int cpl_mesh_box(cpl_mesh *m, const double lo[3], const double hi[3], int nx, int ny, int nz);
+void cpl_mesh_box(cpl_mesh *m, const double lo[3], const double hi[3], int nx, int ny, int nz);
 
 /* Extensions (mesh.c). */
 
@@ -63,13 +64,13 @@ double cpl_mesh_depth(const cpl_mesh *m, int c, const double x[3]);
  * rlo <= (i, j, k) < rhi are split 2 x 2 x 2, as a refinement would: the coarse cells facing the
  * refined block have split faces (more than 6 faces) and faces carry the hanging points, so the mesh
  * is genuinely polyhedral. OpenFOAM ordering. For tests. */
-int cpl_mesh_box_refined(cpl_mesh *m, const double lo[3], const double hi[3], int nx, int ny, int nz,
-                         const int rlo[3], const int rhi[3]);
+void cpl_mesh_box_refined(cpl_mesh *m, const double lo[3], const double hi[3], int nx, int ny, int nz,
+                          const int rlo[3], const int rhi[3]);
 
 /* Move every point by map(x, ctx) and re-derive the geometry (face centres and areas, cell
  * centres and volumes, recomputed from the faces, and the search grid). The map must keep faces
  * planar for cpl_mesh_inside to be exact (a shear or a per-axis stretch does). For tests. */
-int cpl_mesh_map_points(cpl_mesh *m, void (*map)(double x[3], void *ctx), void *ctx);
+void cpl_mesh_map_points(cpl_mesh *m, void (*map)(double x[3], void *ctx), void *ctx);
 
 #ifdef __cplusplus
 }

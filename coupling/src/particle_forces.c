@@ -1,7 +1,6 @@
 /* Fluid forces on particles per model A / B and their split for the exchange (see
  * particle_forces.h for the equations). */
 #include <math.h>
-#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -18,34 +17,20 @@ int cpl_name_find(const char *const *names, const char *name)
     return -1;
 }
 
-int cpl_force_params_check(const cpl_force_params *p)
+void cpl_force_params_check(const cpl_force_params *p)
 {
-    if (p->model != CPL_MODEL_A && p->model != CPL_MODEL_B) {
-        fprintf(stderr, "coupling: error: model type %d is neither A nor B\n", (int)p->model);
-        return -1;
-    }
-    if (!cpl_drag_function(p->drag)) {
-        fprintf(stderr, "coupling: error: drag law %d is not one of the %d laws\n", (int)p->drag, CPL_DRAG_COUNT);
-        return -1;
-    }
-    if (p->exchange != CPL_EXCHANGE_IMPLICIT && p->exchange != CPL_EXCHANGE_EXPLICIT) {
-        fprintf(stderr, "coupling: error: exchange mode %d is neither implicit nor explicit\n", (int)p->exchange);
-        return -1;
-    }
-    if (!(p->rho_f > 0.0) || !isfinite(p->rho_f)) {
-        fprintf(stderr, "coupling: error: fluid density %g must be positive [kg/m^3]\n", p->rho_f);
-        return -1;
-    }
-    if (!(p->mu_f > 0.0) || !isfinite(p->mu_f)) {
-        fprintf(stderr, "coupling: error: fluid dynamic viscosity %g must be positive [Pa s]\n", p->mu_f);
-        return -1;
-    }
+    if (p->model != CPL_MODEL_A && p->model != CPL_MODEL_B)
+        dem_fatal("coupling: model type %d is neither A nor B", (int)p->model);
+    if (!cpl_drag_function(p->drag))
+        dem_fatal("coupling: drag law %d is not one of the %d laws", (int)p->drag, CPL_DRAG_COUNT);
+    if (p->exchange != CPL_EXCHANGE_IMPLICIT && p->exchange != CPL_EXCHANGE_EXPLICIT)
+        dem_fatal("coupling: exchange mode %d is neither implicit nor explicit", (int)p->exchange);
+    if (!(p->rho_f > 0.0) || !isfinite(p->rho_f))
+        dem_fatal("coupling: fluid density %g must be positive [kg/m^3]", p->rho_f);
+    if (!(p->mu_f > 0.0) || !isfinite(p->mu_f))
+        dem_fatal("coupling: fluid dynamic viscosity %g must be positive [Pa s]", p->mu_f);
     for (int k = 0; k < 3; k++)
-        if (!isfinite(p->gravity[k])) {
-            fprintf(stderr, "coupling: error: gravity component %c is not finite\n", "xyz"[k]);
-            return -1;
-        }
-    return 0;
+        if (!isfinite(p->gravity[k])) dem_fatal("coupling: gravity component %c is not finite", "xyz"[k]);
 }
 
 void cpl_fluid_forces_init(cpl_fluid_forces *f)

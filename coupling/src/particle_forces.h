@@ -74,8 +74,8 @@ typedef struct cpl_force_params {
     double gravity[3];   /* [m/s^2] (model B's buoyancy) */
 } cpl_force_params;
 
-/* 0, or -1 with a message on stderr naming the bad parameter. */
-int cpl_force_params_check(const cpl_force_params *p);
+/* A bad parameter is a fatal error naming it (error.h). */
+void cpl_force_params_check(const cpl_force_params *p);
 
 /* Inputs per particle: views of the caller's arrays, all of length n. */
 typedef struct cpl_particle_fluid {

@@ -1,10 +1,11 @@
 /* Void fraction models (centre, divided, gaussian) and the per-particle cell weights they leave
- * behind for the momentum exchange. See voidfraction.h. */
+ * behind for the momentum exchange. See voidfraction.h. Bad arguments and a shortage of memory
+ * are fatal errors (error.h). */
 #include <math.h>
-#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "error.h"
 #include "voidfraction.h"
 
 int cpl_vf_model_parse(const char *name, enum cpl_vf_model *model)
@@ -12,10 +13,7 @@ int cpl_vf_model_parse(const char *name, enum cpl_vf_model *model)
     if (!strcmp(name, "centre")) *model = CPL_VF_CENTRE;
     else if (!strcmp(name, "divided")) *model = CPL_VF_DIVIDED;
     else if (!strcmp(name, "gaussian")) *model = CPL_VF_GAUSSIAN;
-    else {
-        fprintf(stderr, "voidFraction model '%s' unknown: use centre, divided or gaussian\n", name);
-        return -1;
-    }
+    else return -1;
     return 0;
 }
 
@@ -27,15 +25,12 @@ void cpl_vf_free(cpl_voidfraction *vf)
     memset(vf, 0, sizeof *vf);
 }
 
-int cpl_vf_set_samples(cpl_voidfraction *vf, int nshell, int nper)
+void cpl_vf_set_samples(cpl_voidfraction *vf, int nshell, int nper)
 {
-    if (nshell < 1 || nper < 4 || nper % 4 != 0 || (long)nshell * nper > 100000) {
-        fprintf(stderr, "divided void fraction: %d shells of %d points: need at least one shell and a "
-                "multiple of 4 points per shell\n", nshell, nper);
-        return -1;
-    }
-    double (*s)[3] = malloc((size_t)nshell * nper * sizeof *s);
-    if (!s) { fprintf(stderr, "divided void fraction: out of memory\n"); return -1; }
+    if (nshell < 1 || nper < 4 || nper % 4 != 0 || (long)nshell * nper > 100000)
+        dem_fatal("divided void fraction: %d shells of %d points: need at least one shell and a multiple of 4 "
+                  "points per shell", nshell, nper);
+    double (*s)[3] = dem_malloc((size_t)nshell * nper * sizeof *s);
     /* Shell k holds the volume between radii (k/K)^(1/3) and ((k+1)/K)^(1/3): its points sit at
      * the volume median ((k + 1/2)/K)^(1/3). On each shell, a spiral of nper/2 points (uniform in
      * z, which is uniform in area; nper/2 even, so none has z = 0; the half-step phase keeps them
@@ -58,65 +53,49 @@ int cpl_vf_set_samples(cpl_voidfraction *vf, int nshell, int nper)
     free(vf->sample);
     vf->sample = s;
     vf->nsample = n;
-    return 0;
 }
 
-int cpl_vf_init(cpl_voidfraction *vf, const cpl_mesh *m, enum cpl_vf_model model, double alpha_min)
+void cpl_vf_init(cpl_voidfraction *vf, const cpl_mesh *m, enum cpl_vf_model model, double alpha_min)
 {
     memset(vf, 0, sizeof *vf);
-    if (!(alpha_min >= 0.0 && alpha_min < 1.0)) {
-        fprintf(stderr, "void fraction: alphaMin = %g must be in [0, 1)\n", alpha_min);
-        return -1;
-    }
-    if (model != CPL_VF_CENTRE && model != CPL_VF_DIVIDED && model != CPL_VF_GAUSSIAN) {
-        fprintf(stderr, "void fraction: unknown model %d\n", (int)model);
-        return -1;
-    }
+    if (!(alpha_min >= 0.0 && alpha_min < 1.0))
+        dem_fatal("void fraction: alphaMin = %g must be in [0, 1)", alpha_min);
+    if (model != CPL_VF_CENTRE && model != CPL_VF_DIVIDED && model != CPL_VF_GAUSSIAN)
+        dem_fatal("void fraction: unknown model %d", (int)model);
     vf->model = model;
     vf->alpha_min = alpha_min;
     vf->kernel_width = 0.5;
     vf->kernel_cutoff = 3.0;
     vf->ncells = m->ncells;
-    vf->vp = calloc(m->ncells, sizeof(double));
-    vf->alpha = calloc(m->ncells, sizeof(double));
-    vf->mark = calloc(m->ncells, sizeof(unsigned));
-    vf->queue = calloc(m->ncells, sizeof(int));
-    vf->w_start = calloc(1, sizeof(int));
-    if (!vf->vp || !vf->alpha || !vf->mark || !vf->queue || !vf->w_start) {
-        fprintf(stderr, "void fraction: out of memory for %d cells\n", m->ncells);
-        cpl_vf_free(vf);
-        return -1;
-    }
+    vf->vp = dem_calloc(m->ncells, sizeof(double));
+    vf->alpha = dem_calloc(m->ncells, sizeof(double));
+    vf->mark = dem_calloc(m->ncells, sizeof(unsigned));
+    vf->queue = dem_calloc(m->ncells, sizeof(int));
+    vf->w_start = dem_calloc(1, sizeof(int));
     for (int c = 0; c < m->ncells; c++) vf->alpha[c] = 1.0;
-    if (cpl_vf_set_samples(vf, 4, 16) != 0) { cpl_vf_free(vf); return -1; }
-    return 0;
+    cpl_vf_set_samples(vf, 4, 16);
 }
 
-/* Append (cell, weight) to the weight list; -1 when out of memory. */
-static int push(cpl_voidfraction *vf, int *nw, int cell, double w)
+/* Append (cell, weight) to the weight list. */
+static void push(cpl_voidfraction *vf, int *nw, int cell, double w)
 {
     if (*nw == vf->w_cap) {
-        const int cap = vf->w_cap ? 2 * vf->w_cap : 1024;
-        int *wc = realloc(vf->w_cell, cap * sizeof(int));
-        if (wc) vf->w_cell = wc;
-        double *ww = realloc(vf->w, cap * sizeof(double));
-        if (ww) vf->w = ww;
-        if (!wc || !ww) { fprintf(stderr, "void fraction: out of memory for %d weights\n", cap); return -1; }
-        vf->w_cap = cap;
+        vf->w_cap = vf->w_cap ? 2 * vf->w_cap : 1024;
+        vf->w_cell = dem_realloc(vf->w_cell, vf->w_cap * sizeof(int));
+        vf->w = dem_realloc(vf->w, vf->w_cap * sizeof(double));
     }
     vf->w_cell[*nw] = cell;
     vf->w[*nw] = w;
     (*nw)++;
-    return 0;
 }
 
 /* divided: each sample point's share to its own cell; points outside the mesh dropped and the
  * rest renormalised. */
-static int weights_divided(cpl_voidfraction *vf, const cpl_mesh *m, const double x[3], double r, int c, int *nw)
+static void weights_divided(cpl_voidfraction *vf, const cpl_mesh *m, const double x[3], double r, int c, int *nw)
 {
     /* the whole sphere inside the cell (the common case of particles smaller than cells): every
      * point would be found there, skip locating them */
-    if (cpl_mesh_depth(m, c, x) >= r) return push(vf, nw, c, 1.0);
+    if (cpl_mesh_depth(m, c, x) >= r) { push(vf, nw, c, 1.0); return; }
     const int first = *nw;
     int inside = 0;
     for (int k = 0; k < vf->nsample; k++) {
@@ -128,17 +107,16 @@ static int weights_divided(cpl_voidfraction *vf, const cpl_mesh *m, const double
         int j = first;
         while (j < *nw && vf->w_cell[j] != cs) j++;
         if (j < *nw) vf->w[j] += 1.0;
-        else if (push(vf, nw, cs, 1.0) != 0) return -1;
+        else push(vf, nw, cs, 1.0);
     }
-    if (inside == 0) return push(vf, nw, c, 1.0);   /* only the centre is in the mesh */
+    if (inside == 0) { push(vf, nw, c, 1.0); return; }   /* only the centre is in the mesh */
     for (int j = first; j < *nw; j++) vf->w[j] /= inside;
-    return 0;
 }
 
 /* gaussian: breadth-first through faces from the particle's cell, over cells whose centres are
  * within the cutoff; weights V_c exp(-d^2 / 2 s^2) (the kernel times the cell's volume: the
  * kernel's integral over the cell), normalised over the cells found. */
-static int weights_gaussian(cpl_voidfraction *vf, const cpl_mesh *m, const double x[3], double r, int c, int *nw)
+static void weights_gaussian(cpl_voidfraction *vf, const cpl_mesh *m, const double x[3], double r, int c, int *nw)
 {
     const double s = vf->kernel_width * 2.0 * r, cut = vf->kernel_cutoff * s;
     if (++vf->stamp == 0) {   /* wrapped: clear the marks */
@@ -155,7 +133,7 @@ static int weights_gaussian(cpl_voidfraction *vf, const cpl_mesh *m, const doubl
         double d2 = 0;
         for (int d = 0; d < 3; d++) d2 += (m->cell_centre[a][d] - x[d]) * (m->cell_centre[a][d] - x[d]);
         if (d2 < d2min) d2min = d2;
-        if (push(vf, nw, a, d2) != 0) return -1;   /* distance^2 for now, weight below */
+        push(vf, nw, a, d2);   /* distance^2 for now, weight below */
         for (int k = m->cell_face_start[a]; k < m->cell_face_start[a + 1]; k++) {
             const int n = cpl_mesh_other_cell(m, m->cell_faces[k], a);
             if (n < 0 || vf->mark[n] == vf->stamp) continue;
@@ -173,32 +151,22 @@ static int weights_gaussian(cpl_voidfraction *vf, const cpl_mesh *m, const doubl
         sum += vf->w[j];
     }
     for (int j = first; j < *nw; j++) vf->w[j] /= sum;
-    return 0;
 }
 
 int cpl_vf_compute(cpl_voidfraction *vf, const cpl_mesh *m, int np, const double (*x)[3],
                    const double *r, int *cell)
 {
-    if (np < 0 || m->ncells != vf->ncells) {
-        fprintf(stderr, "void fraction: %d particles, mesh of %d cells (set up for %d)\n", np, m->ncells, vf->ncells);
-        return -1;
-    }
+    if (np < 0 || m->ncells != vf->ncells)
+        dem_fatal("void fraction: %d particles, mesh of %d cells (set up for %d)", np, m->ncells, vf->ncells);
     for (int i = 0; i < np; i++)
-        if (!(r[i] > 0) || !isfinite(r[i])) {
-            fprintf(stderr, "void fraction: particle %d has radius %g m\n", i, r[i]);
-            return -1;
-        }
+        if (!(r[i] > 0) || !isfinite(r[i])) dem_fatal("void fraction: particle %d has radius %g m", i, r[i]);
     if (np + 1 > vf->np_cap) {
-        int *ws = realloc(vf->w_start, (np + 1) * sizeof(int));
-        if (!ws) { fprintf(stderr, "void fraction: out of memory for %d particles\n", np); return -1; }
-        vf->w_start = ws;
+        vf->w_start = dem_realloc(vf->w_start, (np + 1) * sizeof(int));
         vf->np_cap = np + 1;
     }
-    if (vf->model == CPL_VF_GAUSSIAN && !(vf->kernel_width > 0 && vf->kernel_cutoff > 0)) {
-        fprintf(stderr, "gaussian void fraction: kernel width %g and cutoff %g must be positive\n",
-                vf->kernel_width, vf->kernel_cutoff);
-        return -1;
-    }
+    if (vf->model == CPL_VF_GAUSSIAN && !(vf->kernel_width > 0 && vf->kernel_cutoff > 0))
+        dem_fatal("gaussian void fraction: kernel width %g and cutoff %g must be positive", vf->kernel_width,
+                  vf->kernel_cutoff);
     int nw = 0, outside = 0;
     vf->np = np;
     for (int i = 0; i < np; i++) {
@@ -207,13 +175,11 @@ int cpl_vf_compute(cpl_voidfraction *vf, const cpl_mesh *m, int np, const double
         const int c = cpl_mesh_locate(m, x[i], guess, NULL);
         cell[i] = c;
         if (c < 0) { outside++; continue; }
-        int rc = 0;
         switch (vf->model) {
-        case CPL_VF_CENTRE: rc = push(vf, &nw, c, 1.0); break;
-        case CPL_VF_DIVIDED: rc = weights_divided(vf, m, x[i], r[i], c, &nw); break;
-        case CPL_VF_GAUSSIAN: rc = weights_gaussian(vf, m, x[i], r[i], c, &nw); break;
+        case CPL_VF_CENTRE: push(vf, &nw, c, 1.0); break;
+        case CPL_VF_DIVIDED: weights_divided(vf, m, x[i], r[i], c, &nw); break;
+        case CPL_VF_GAUSSIAN: weights_gaussian(vf, m, x[i], r[i], c, &nw); break;
         }
-        if (rc != 0) { vf->np = 0; vf->w_start[0] = 0; return -1; }
     }
     vf->w_start[np] = nw;
     memset(vf->vp, 0, vf->ncells * sizeof(double));

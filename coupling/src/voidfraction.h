@@ -51,22 +51,23 @@ typedef struct cpl_voidfraction {
     int *queue;
 } cpl_voidfraction;
 
-/* name: "centre", "divided" or "gaussian". Returns 0, or -1 with a message on stderr. */
+/* name: "centre", "divided" or "gaussian". Returns 0, or -1 for another name (the caller says
+ * where it came from). */
 int cpl_vf_model_parse(const char *name, enum cpl_vf_model *model);
 
 /* Set up for mesh m (which must outlive vf): defaults kernel_width 0.5, kernel_cutoff 3,
- * divided 4 shells x 16 points. alpha_min in [0, 1). Returns 0, or -1 with a message. */
-int cpl_vf_init(cpl_voidfraction *vf, const cpl_mesh *m, enum cpl_vf_model model, double alpha_min);
+ * divided 4 shells x 16 points. alpha_min in [0, 1) (else a fatal error, error.h). */
+void cpl_vf_init(cpl_voidfraction *vf, const cpl_mesh *m, enum cpl_vf_model model, double alpha_min);
 void cpl_vf_free(cpl_voidfraction *vf);
 
 /* divided: nshell >= 1 shells of nper points, nper a multiple of 4 (antipodal pairs, none on
- * the coordinate planes through the centre). Returns 0, or -1 with a message. */
-int cpl_vf_set_samples(cpl_voidfraction *vf, int nshell, int nper);
+ * the coordinate planes through the centre); other counts are a fatal error. */
+void cpl_vf_set_samples(cpl_voidfraction *vf, int nshell, int nper);
 
 /* Map np particles (centres x [m], radii r [m]) onto the cells. cell[i]: the particle's cell
  * from the last call (or -1 if unknown); updated here (-1 when outside the mesh). Fills vp,
- * alpha and the weights. Returns the number of particles outside the mesh (not mapped), or -1
- * with a message on bad input (radius not positive and finite, out of memory). */
+ * alpha and the weights. Returns the number of particles outside the mesh (not mapped). Bad input
+ * (a radius not positive and finite, a mesh other than vf's) is a fatal error. */
 int cpl_vf_compute(cpl_voidfraction *vf, const cpl_mesh *m, int np, const double (*x)[3],
                    const double *r, int *cell);
 

@@ -376,12 +376,12 @@ static void run_insertions(const dict *root, dem_system *s, int insert, const ch
         }
         if (insert) {   /* skipped on restart: the particles come from the snapshot */
             switch (ins.method) {
-            case INSERT_RANDOM: printf("insertion '%s': %ld particles\n", name, insertion_run(s, &ins)); break;
+            case INSERT_RANDOM: dem_info("insertion '%s': %ld particles", name, insertion_run(s, &ins)); break;
             case INSERT_LATTICE:
-                printf("insertion '%s': %ld particles (lattice)\n", name, insertion_lattice(s, &ins, e));
+                dem_info("insertion '%s': %ld particles (lattice)", name, insertion_lattice(s, &ins, e));
                 break;
             case INSERT_FILE:
-                printf("insertion '%s': %ld particles (from %s)\n", name, insertion_file(s, &ins, e), ins.file);
+                dem_info("insertion '%s': %ld particles (from %s)", name, insertion_file(s, &ins, e), ins.file);
                 break;
             }
         }

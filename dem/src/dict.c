@@ -1,5 +1,6 @@
 /* OpenFOAM-syntax dictionary reader. See dict.h for the accepted syntax and the error
- * policy: every problem is reported as "<file>:<line>: error: ..." and exits with 1.
+ * policy: every problem is a fatal error (error.h) about "<file>:<line>", which by default
+ * prints "<file>:<line>: error: ..." and exits with 1.
  *
  * Structure: a small lexer turns the file into tokens; the parser builds a tree of
  * dictionaries whose entries are either a sub-dictionary or the raw value tokens up to
@@ -62,19 +63,24 @@ static char *xstrndup(const char *s, size_t n)
 
 static char *xstrdup(const char *s) { return xstrndup(s, strlen(s)); }
 
+/* A fatal error (error.h) about "<file>:<line>", the message starting with "key '<key>': ". */
 static void vfatal_at(const char *file, int line, const char *key, const char *fmt, va_list ap)
     __attribute__((noreturn));
 static void vfatal_at(const char *file, int line, const char *key, const char *fmt, va_list ap)
 {
-    fflush(stdout);
+    char where[4200];
     if (line > 0)
-        fprintf(stderr, "%s:%d: error: ", file, line);
+        snprintf(where, sizeof where, "%s:%d", file, line);
     else
-        fprintf(stderr, "%s: error: ", file);
-    if (key) fprintf(stderr, "key '%s': ", key);
-    vfprintf(stderr, fmt, ap);
-    fputc('\n', stderr);
-    exit(1);
+        snprintf(where, sizeof where, "%s", file);
+    va_list again;
+    va_copy(again, ap);
+    const int n = vsnprintf(NULL, 0, fmt, ap);
+    char *what = dem_malloc(n > 0 ? (size_t)n + 1 : 1);
+    vsnprintf(what, n > 0 ? (size_t)n + 1 : 1, fmt, again);
+    va_end(again);
+    if (key) dem_fatal_at(where, "key '%s': %s", key, what);
+    dem_fatal_at(where, "%s", what);
 }
 
 static void fatal_at(const char *file, int line, const char *key, const char *fmt, ...)

@@ -5,8 +5,9 @@
  * double-quoted strings, and `#include "file"` (path relative to the including file).
  * A `FoamFile { }` header is accepted and ignored.
  *
- * Every error is fatal: it prints "<file>:<line>: error: ... key '<key>' ..." to stderr
- * and exits with status 1 (see dem_fatal in error.h). Every accessor records the key it
+ * Every error is fatal, through the fatal handler of error.h, about "<file>:<line>" with the
+ * message "key '<key>': ..." (by default printed as "<file>:<line>: error: key '<key>': ..."
+ * with exit status 1). Every accessor records the key it
  * was asked for, found or not; dict_check_unused() then reports a key that nobody read
  * as unknown and suggests the nearest key that was asked for (edit distance).
  */

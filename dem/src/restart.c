@@ -86,7 +86,7 @@ void restart_setup(dem_system *s, const contact_state *cs)
             }
     }
     free(map);
-    printf("restart: contact history of %ld of %ld particle pairs restored\n", restored, cs->npairs);
+    dem_info("restart: contact history of %ld of %ld particle pairs restored", restored, cs->npairs);
     if (!keep_forces) system_compute_forces(s);
 }
 

@@ -65,11 +65,11 @@ void timestep_check(const dem_system *s, double max_velocity, int override, cons
     if (s->p.n == 0) return;
     const timestep_limits lim = timestep_limits_compute(s, max_velocity);
     const double fr = s->dt / lim.rayleigh_time, fc = s->dt / lim.contact_time;
-    printf("time step %g s: %.3f of the Rayleigh time %.3g s (%s; limit %.2f), "
-           "%.3f of the %s contact time %.3g s at %g m/s (%s; limit %.2f)\n",
-           s->dt, fr, lim.rayleigh_time, lim.rayleigh_material, RAYLEIGH_FRACTION, fc,
-           system_model(s, SLOT_NORMAL)->contact_time_name, lim.contact_time,
-           max_velocity, lim.contact_pair, CONTACT_FRACTION);
+    dem_info("time step %g s: %.3f of the Rayleigh time %.3g s (%s; limit %.2f), "
+             "%.3f of the %s contact time %.3g s at %g m/s (%s; limit %.2f)",
+             s->dt, fr, lim.rayleigh_time, lim.rayleigh_material, RAYLEIGH_FRACTION, fc,
+             system_model(s, SLOT_NORMAL)->contact_time_name, lim.contact_time,
+             max_velocity, lim.contact_pair, CONTACT_FRACTION);
     if (s->dt <= lim.largest_safe_dt) return;
     if (override) {
         dem_warning("\n*****************************************************************\n"

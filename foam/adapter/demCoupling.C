@@ -10,6 +10,7 @@
 #include <type_traits>
 
 #include "coupling.h"       // C API (extern "C"), coupling/src
+#include "error.h"          // the C libraries' fatal handler and logger, dem/src
 
 // The arrays go across without conversion: label must be a C int and a vector three packed doubles
 static_assert(sizeof(Foam::label) == sizeof(int), "label must be int32 (WM_LABEL_SIZE=32)");
@@ -24,6 +25,37 @@ namespace
     {
         return reinterpret_cast<const double (*)[3]>(f.cdata());
     }
+
+    // An error in the C libraries (a dictionary's with "file:line: error: key ...") stops the
+    // run as OpenFOAM's own errors do. The C frames it is called from cannot be unwound, so it
+    // stops the program even where FatalError was set to throw.
+    void raiseFatalError(const char* where, const char* message)
+    {
+        Foam::FatalError.throwExceptions(false);
+        Foam::OSstream& os = FatalErrorInFunction;
+        if (where)
+        {
+            os << where << ": ";
+        }
+        os << "error: " << message << Foam::exit(Foam::FatalError);
+    }
+
+    // The C libraries' info and warning lines, through OpenFOAM's streams (master only)
+    void writeLog(dem_log_level level, const char* message)
+    {
+        if (level == DEM_LOG_WARNING)
+        {
+            Foam::Warning << message << Foam::endl;
+        }
+        else
+        {
+            Foam::Info << message << Foam::endl;
+        }
+    }
+
+    // The hooks set before this adapter's, put back by the destructor
+    dem_fatal_handler previousFatalHandler = nullptr;
+    dem_logger previousLogger = nullptr;
 }
 
 
@@ -53,6 +85,9 @@ Foam::demCoupling::demCoupling
             << "The DEM coupling runs in one process (the C layer holds the whole mesh and"
             << " all particles); run without -parallel." << exit(FatalError);
     }
+
+    previousFatalHandler = dem_set_fatal_handler(raiseFatalError);
+    previousLogger = dem_set_logger(writeLog);
 
     // --- the mesh arrays, as OpenFOAM orders them (internal faces first)
     const pointField& pts = mesh.points();
@@ -91,7 +126,7 @@ Foam::demCoupling::demCoupling
     }
     cpl_mesh* m = cmesh_;
 
-    const int status = cpl_mesh_init
+    cpl_mesh_init
     (
         m,
         pts.size(), c3(pts),
@@ -99,12 +134,6 @@ Foam::demCoupling::demCoupling
         nei.size(), own.cdata(), nei.cdata(),
         mesh.nCells(), c3(C), V.cdata()
     );
-    if (status != 0)
-    {
-        FatalErrorInFunction
-            << "cpl_mesh_init failed for the mesh of " << mesh.time().path()
-            << " (message above)" << exit(FatalError);
-    }
 
     Info<< "demCoupling: mesh copied to the coupling layer: " << pts.size() << " points, "
         << nFaces << " faces (" << nei.size() << " internal), " << mesh.nCells()
@@ -112,12 +141,6 @@ Foam::demCoupling::demCoupling
 
     const fileName caseDir(mesh.time().path());
     session_ = coupling_create(caseDir.c_str(), m, rho, nu, deltaT, startTime);
-    if (!session_)
-    {
-        FatalErrorInFunction
-            << "coupling_create failed for case " << caseDir
-            << " (constant/demProperties, constant/couplingProperties)" << exit(FatalError);
-    }
 
     modelA_ = (coupling_model_type(session_) == CPL_MODEL_A);
     interval_ = coupling_interval(session_);
@@ -137,6 +160,8 @@ Foam::demCoupling::~demCoupling()
         coupling_free(session_);
     }
     std::free(cmesh_);
+    dem_set_fatal_handler(previousFatalHandler);
+    dem_set_logger(previousLogger);
 }
 
 

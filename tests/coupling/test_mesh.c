@@ -1,9 +1,11 @@
 /* The fluid mesh: box mesh in OpenFOAM's ordering with exact geometry; particle location by walk
  * and by full search agrees with brute force (inside test over all cells) on a box, on a sheared
  * and graded hex mesh, and on a polyhedral mesh with a refined block (split faces, hanging
- * points); points outside the mesh give -1; bad input gives -1 and a message, not a crash. */
+ * points); points outside the mesh give -1; bad input is a fatal error with a message naming it,
+ * not a crash. */
 #include <stdlib.h>
 
+#include "catch_fatal.h"
 #include "harness.h"
 #include "test_meshes.h"
 #include "mesh.h"
@@ -105,7 +107,7 @@ int main(void)
     {
         const double lo[3] = {-0.5, 0, 1}, hi[3] = {0.5, 0.6, 3};
         cpl_mesh m;
-        if (cpl_mesh_box(&m, lo, hi, 4, 3, 5) != 0) return 1;
+        cpl_mesh_box(&m, lo, hi, 4, 3, 5);
         check_true("box 4x3x5: 60 cells, 133 internal faces, 227 faces, 120 points",
                    m.ncells == 60 && m.ninternal_faces == 133 && m.nfaces == 227 && m.npoints == 120);
         check_true("box: OpenFOAM ordering (owner < neighbour, sorted, S out of owner)", ordering_ok(&m));
@@ -146,33 +148,32 @@ int main(void)
         cpl_mesh m2;
         double *vol = malloc(m.ncells * sizeof(double));
         for (int c = 0; c < m.ncells; c++) vol[c] = 2.0 * m.cell_volume[c];
-        int rc = cpl_mesh_init(&m2, m.npoints, (const double (*)[3])m.points, m.nfaces, m.face_start,
-                               m.face_points, m.ninternal_faces, m.owner, m.neighbour, m.ncells,
-                               (const double (*)[3])m.cell_centre, vol);
-        check_true("init with given cell volumes keeps them", rc == 0 && m2.cell_volume[7] == vol[7]);
+        cpl_mesh_init(&m2, m.npoints, (const double (*)[3])m.points, m.nfaces, m.face_start, m.face_points,
+                      m.ninternal_faces, m.owner, m.neighbour, m.ncells, (const double (*)[3])m.cell_centre, vol);
+        check_true("init with given cell volumes keeps them", m2.cell_volume[7] == vol[7]);
         cpl_mesh_free(&m2);
 
-        /* bad input: message and -1 */
+        /* bad input: a fatal error that names it */
         int *own = malloc(m.nfaces * sizeof(int));
         memcpy(own, m.owner, m.nfaces * sizeof(int));
         own[5] = m.ncells;
-        fprintf(stderr, "(expected error follows)\n");
-        rc = cpl_mesh_init(&m2, m.npoints, (const double (*)[3])m.points, m.nfaces, m.face_start,
-                           m.face_points, m.ninternal_faces, own, m.neighbour, m.ncells, NULL, NULL);
-        check_true("owner out of range: -1 with a message", rc == -1 && m2.points == NULL);
+        int ok;
+        STOPS_WITH(ok, cpl_mesh_init(&m2, m.npoints, (const double (*)[3])m.points, m.nfaces, m.face_start,
+                                     m.face_points, m.ninternal_faces, own, m.neighbour, m.ncells, NULL, NULL),
+                   "cpl_mesh_init: face 5 has owner 60 (there are 60 cells)");
+        check_true("owner out of range: fatal error naming the face", ok);
         /* a face list with every face reversed: negative volumes */
         int *rev = malloc(m.face_start[m.nfaces] * sizeof(int));
         for (int f = 0; f < m.nfaces; f++) {
             const int a = m.face_start[f], b = m.face_start[f + 1];
             for (int k = a; k < b; k++) rev[k] = m.face_points[b - 1 - (k - a)];
         }
-        fprintf(stderr, "(expected error follows)\n");
-        rc = cpl_mesh_init(&m2, m.npoints, (const double (*)[3])m.points, m.nfaces, m.face_start, rev,
-                           m.ninternal_faces, m.owner, m.neighbour, m.ncells, NULL, NULL);
-        check_true("reversed faces: -1 with a message", rc == -1);
-        fprintf(stderr, "(expected error follows)\n");
-        rc = cpl_mesh_box(&m2, hi, lo, 2, 2, 2);
-        check_true("empty box: -1 with a message", rc == -1);
+        STOPS_WITH(ok, cpl_mesh_init(&m2, m.npoints, (const double (*)[3])m.points, m.nfaces, m.face_start, rev,
+                                     m.ninternal_faces, m.owner, m.neighbour, m.ncells, NULL, NULL),
+                   "has a non-positive volume");
+        check_true("reversed faces: fatal error (non-positive volume)", ok);
+        STOPS_WITH(ok, cpl_mesh_box(&m2, hi, lo, 2, 2, 2), "cpl_mesh_box: empty box: lo[0] = 0.5 m, hi[0] = -0.5 m");
+        check_true("empty box: fatal error naming the box", ok);
         free(own); free(rev); free(vol);
         cpl_mesh_free(&m);
         cpl_mesh_free(&m);   /* a freed mesh can be freed again */
@@ -182,7 +183,8 @@ int main(void)
     {
         const double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
         cpl_mesh m;
-        if (cpl_mesh_box(&m, lo, hi, 9, 7, 11) != 0 || cpl_mesh_map_points(&m, shear_grade, NULL) != 0) return 1;
+        cpl_mesh_box(&m, lo, hi, 9, 7, 11);
+        cpl_mesh_map_points(&m, shear_grade, NULL);
         check_true("skewed: OpenFOAM ordering kept", ordering_ok(&m));
         check_true("skewed: cells closed (1e-14)", worst_open_cell(&m) < 1e-14);
         /* volume: the shears have unit Jacobian, the stretches give x: 1, z: 3 */
@@ -200,7 +202,7 @@ int main(void)
         const double lo[3] = {0, 0, 0}, hi[3] = {1, 0.8, 0.8};
         const int rlo[3] = {1, 1, 1}, rhi[3] = {3, 3, 3};
         cpl_mesh m;
-        if (cpl_mesh_box_refined(&m, lo, hi, 5, 4, 4, rlo, rhi) != 0) return 1;
+        cpl_mesh_box_refined(&m, lo, hi, 5, 4, 4, rlo, rhi);
         int maxf = 0, maxp = 0;
         for (int c = 0; c < m.ncells; c++) {
             const int nf = m.cell_face_start[c + 1] - m.cell_face_start[c];
@@ -221,7 +223,7 @@ int main(void)
         int outside, searches;
         int bad = locate_agrees(&m, 4000, 3, &outside, &searches);
         check_true("refined: walk and full search agree with brute force (4000 points)", bad == 0);
-        if (cpl_mesh_map_points(&m, shear_linear, NULL) != 0) return 1;
+        cpl_mesh_map_points(&m, shear_linear, NULL);
         check_true("refined+sheared: cells closed (1e-14)", worst_open_cell(&m) < 1e-14);
         check_true("refined+sheared: OpenFOAM ordering", ordering_ok(&m));
         bad = locate_agrees(&m, 6000, 4, &outside, &searches);

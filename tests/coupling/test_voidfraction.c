@@ -3,9 +3,10 @@
  * graded mesh and a polyhedral refined mesh; gaussian conserves at walls; the alphaMin floor is
  * applied; divided splits a sphere straddling a face by the geometric overlap within its sampling
  * error; forces spread with the same weights; particles outside are counted, not dropped
- * silently; bad input gives -1 and a message. */
+ * silently; bad input is a fatal error with a message naming it. */
 #include <stdlib.h>
 
+#include "catch_fatal.h"
 #include "harness.h"
 #include "test_meshes.h"
 #include "mesh.h"
@@ -56,7 +57,7 @@ static void conservation(const char *mesh_name, const cpl_mesh *m, int np, doubl
     for (int i = 0; i < np; i++) total += sphere_volume(r[i]);
     for (int model = first_model; model < 3; model++) {
         cpl_voidfraction vf;
-        if (cpl_vf_init(&vf, m, (enum cpl_vf_model)model, 0.05) != 0) exit(1);
+        cpl_vf_init(&vf, m, (enum cpl_vf_model)model, 0.05);
         for (int i = 0; i < np; i++) cell[i] = -1;
         const int out = cpl_vf_compute(&vf, m, np, (const double (*)[3])x, r, cell);
         int floored;
@@ -123,7 +124,7 @@ int main(void)
 {
     const double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
     cpl_mesh box;
-    if (cpl_mesh_box(&box, lo, hi, 10, 10, 10) != 0) return 1;   /* cells 0.1 m, 1e-3 m^3 */
+    cpl_mesh_box(&box, lo, hi, 10, 10, 10);   /* cells 0.1 m, 1e-3 m^3 */
 
     /* 1. conservation, particles smaller than cells and (gaussian's case) larger than cells */
     conservation("box", &box, 600, 0.01, 0.03, 1, CPL_VF_CENTRE);
@@ -132,7 +133,7 @@ int main(void)
     /* 2. gaussian at walls and in a corner: all the volume stays in the mesh */
     {
         cpl_voidfraction vf;
-        if (cpl_vf_init(&vf, &box, CPL_VF_GAUSSIAN, 0.0) != 0) return 1;
+        cpl_vf_init(&vf, &box, CPL_VF_GAUSSIAN, 0.0);
         vf.kernel_width = 1.0;   /* s = d: wide enough that even the corner cell stays off the floor */
         double x[4][3] = {{0.02, 0.5, 0.5}, {0.5, 0.97, 0.43}, {0.01, 0.01, 0.99}, {0.51, 0.47, 0.52}};
         double r[4] = {0.08, 0.06, 0.08, 0.08};
@@ -163,7 +164,7 @@ int main(void)
     /* 3. the floor */
     {
         cpl_voidfraction vf;
-        if (cpl_vf_init(&vf, &box, CPL_VF_CENTRE, 0.3) != 0) return 1;
+        cpl_vf_init(&vf, &box, CPL_VF_CENTRE, 0.3);
         double x[1][3] = {{0.55, 0.55, 0.55}}, r[1] = {0.08};   /* 2.14e-3 m^3 in a 1e-3 m^3 cell */
         int cell[1] = {-1};
         cpl_vf_compute(&vf, &box, 1, (const double (*)[3])x, r, cell);
@@ -178,7 +179,7 @@ int main(void)
     /* 4. divided: spheres straddling the face x = 0.5 between two cells */
     {
         cpl_voidfraction vf;
-        if (cpl_vf_init(&vf, &box, CPL_VF_DIVIDED, 0.0) != 0) return 1;
+        cpl_vf_init(&vf, &box, CPL_VF_DIVIDED, 0.0);
         double x[4][3] = {{0.5, 0.55, 0.55}, {0.5 - 0.02, 0.45, 0.35}, {0.5 + 0.01, 0.35, 0.65}, {0.5, 0.25, 0.55}};
         double r[4] = {0.04, 0.04, 0.04, 0.04};   /* offsets t = d/r: 0, 0.5, 0.25 */
         int cell[4] = {-1, -1, -1, -1};
@@ -231,7 +232,7 @@ int main(void)
     /* 5. particles outside the mesh are counted and not mapped */
     {
         cpl_voidfraction vf;
-        if (cpl_vf_init(&vf, &box, CPL_VF_DIVIDED, 0.0) != 0) return 1;
+        cpl_vf_init(&vf, &box, CPL_VF_DIVIDED, 0.0);
         double x[4][3] = {{0.5, 0.5, 0.5}, {1.2, 0.5, 0.5}, {0.3, 0.3, 0.3}, {0.5, -0.01, 0.5}};
         double r[4] = {0.02, 0.02, 0.03, 0.005};
         int cell[4] = {0, 0, 0, 0};
@@ -246,13 +247,14 @@ int main(void)
     /* 6. skewed and polyhedral meshes */
     {
         cpl_mesh m;
-        if (cpl_mesh_box(&m, lo, hi, 9, 7, 11) != 0 || cpl_mesh_map_points(&m, shear_grade, NULL) != 0) return 1;
+        cpl_mesh_box(&m, lo, hi, 9, 7, 11);
+        cpl_mesh_map_points(&m, shear_grade, NULL);
         conservation("skewed", &m, 500, 0.01, 0.04, 3, CPL_VF_CENTRE);
         cpl_mesh_free(&m);
         const double hi2[3] = {1, 0.8, 0.8};
         const int rlo[3] = {1, 1, 1}, rhi[3] = {3, 3, 3};
-        if (cpl_mesh_box_refined(&m, lo, hi2, 5, 4, 4, rlo, rhi) != 0 || cpl_mesh_map_points(&m, shear_only, NULL) != 0)
-            return 1;
+        cpl_mesh_box_refined(&m, lo, hi2, 5, 4, 4, rlo, rhi);
+        cpl_mesh_map_points(&m, shear_only, NULL);
         conservation("refined polyhedral", &m, 300, 0.01, 0.03, 4, CPL_VF_CENTRE);
         cpl_mesh_free(&m);
     }
@@ -261,16 +263,20 @@ int main(void)
     {
         cpl_voidfraction vf;
         enum cpl_vf_model model;
-        fprintf(stderr, "(expected errors follow)\n");
-        check_true("model names parsed, unknown one refused",
+        check_true("model names parsed, an unknown one not found",
                    cpl_vf_model_parse("gaussian", &model) == 0 && model == CPL_VF_GAUSSIAN &&
                    cpl_vf_model_parse("dividedd", &model) == -1);
-        check_true("alphaMin = 1 refused", cpl_vf_init(&vf, &box, CPL_VF_CENTRE, 1.0) == -1);
-        if (cpl_vf_init(&vf, &box, CPL_VF_CENTRE, 0.0) != 0) return 1;
+        int ok;
+        STOPS_WITH(ok, cpl_vf_init(&vf, &box, CPL_VF_CENTRE, 1.0), "void fraction: alphaMin = 1 must be in [0, 1)");
+        check_true("alphaMin = 1: fatal error", ok);
+        cpl_vf_init(&vf, &box, CPL_VF_CENTRE, 0.0);
         double x[1][3] = {{0.5, 0.5, 0.5}}, r[1] = {0.0};
         int cell[1] = {-1};
-        check_true("radius 0 refused", cpl_vf_compute(&vf, &box, 1, (const double (*)[3])x, r, cell) == -1);
-        check_true("3 points per shell refused", cpl_vf_set_samples(&vf, 2, 3) == -1);
+        STOPS_WITH(ok, cpl_vf_compute(&vf, &box, 1, (const double (*)[3])x, r, cell),
+                   "void fraction: particle 0 has radius 0 m");
+        check_true("radius 0: fatal error naming the particle", ok);
+        STOPS_WITH(ok, cpl_vf_set_samples(&vf, 2, 3), "divided void fraction: 2 shells of 3 points");
+        check_true("3 points per shell: fatal error", ok);
         cpl_vf_free(&vf);
     }
     cpl_mesh_free(&box);

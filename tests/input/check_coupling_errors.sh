@@ -1,6 +1,8 @@
 #!/bin/bash
 # Bad coupled-case input must stop voidPimpleFoam with exit status 1 and a message naming the
-# file, line and key; never a crash. Runs on a copy of tutorials/settling.
+# file, line and key; never a crash. Runs on a copy of tutorials/settling. The C side's errors
+# come as OpenFOAM's FatalError ("--> FOAM FATAL ERROR:" and then "<file>:<line>: error: key
+# ..."), its warnings as OpenFOAM's Warning ("--> FOAM Warning : ...").
 # Usage: check_coupling_errors.sh <voidPimpleFoam> <settling case dir>
 solver=$1 base=$2
 work=$(mktemp -d)
@@ -41,7 +43,7 @@ done
 # Accepted input that deserves a warning: the run goes on (exit 0) and says why.
 # name | file | sed expression (';'-separated for several) | text the warning must contain
 warnings=(
-  "large_particle_centre|constant/demProperties|s/value 1e-4;/value 6e-3;/;s/min (-1e-4 -1e-4 0.0899); max (1e-4 1e-4 0.0901)/min (-0.004 -0.004 0.08); max (0.004 0.004 0.09)/|WARNING: couplingProperties: voidFraction model centre: 1 of 1 particles are wider than their fluid cell"
+  "large_particle_centre|constant/demProperties|s/value 1e-4;/value 6e-3;/;s/min (-1e-4 -1e-4 0.0899); max (1e-4 1e-4 0.0901)/min (-0.004 -0.004 0.08); max (0.004 0.004 0.09)/|FOAM Warning : couplingProperties: voidFraction model centre: 1 of 1 particles are wider than their fluid cell"
 )
 for c in "${warnings[@]}"; do
     IFS='|' read -r name file expr expect <<< "$c"
@@ -51,7 +53,7 @@ for c in "${warnings[@]}"; do
     "$solver" -case "$work/$name" > "$work/$name.log" 2>&1
     status=$?
     if [ $status -eq 0 ] && grep -qE "$expect" "$work/$name.log"; then
-        echo "PASS $name: $(grep -m1 -oE "WARNING: .{0,140}" "$work/$name.log")"
+        echo "PASS $name: $(grep -m1 -oE "FOAM Warning : .{0,140}" "$work/$name.log")"
         passed=$((passed + 1))
     else
         echo "FAIL $name: exit status $status, expected 0 and a warning matching: $expect"
