@@ -171,9 +171,7 @@ static void read_cylinder(const dict *d, int *axis, double centre[2], double *ra
 
 static wall *new_wall(dem_system *s, const dict *d, const char *name)
 {
-    if (s->nwalls == DEM_MAX_WALLS) dict_fatal_here(d, "at most %d wall primitives (a box counts 6)", DEM_MAX_WALLS);
-    wall *w = &s->walls[s->nwalls++];
-    memset(w, 0, sizeof *w);
+    wall *w = walls_add(s);
     snprintf(w->name, sizeof w->name, "%s", name);
     return w;
 }

@@ -10,9 +10,10 @@
  * one being written readable; a snapshot without `complete` is ignored on restart.
  * <base>.xdmf is rewritten after each snapshot and lists the complete ones.
  * With contact history (the *_contacts variants) a snapshot also holds /snapshots/<k>/contacts/
- *       attributes history_size, nwalls; datasets pair_ids (m x 2, int64: the two particle ids),
- *       pair_history (m x history_size), wall_history (n x nwalls*history_size, particles in the
- *       snapshot's order), so that a restart continues the contacts where they were.
+ *       attributes history_size, nwalls; datasets keys (m x 2, int64: a pair's two particle ids
+ *       as the list held them, or -1 - wall index and the particle id for a wall contact) and
+ *       history (m x history_size), so that a restart continues the contacts where they were
+ *       (contacts.h).
  */
 #ifndef DEM_IO_H
 #define DEM_IO_H
@@ -21,14 +22,13 @@
 
 typedef struct particle_writer particle_writer;
 
-/* Contact history in a form independent of particle order and neighbour lists. */
+/* Contact history in a form independent of particle order and neighbour lists (contacts.h). */
 typedef struct contact_state {
     int history_size;        /* doubles per contact */
-    long npairs;
-    int64_t *pair_ids;       /* 2 per pair */
-    double *pair_history;    /* history_size per pair */
-    int nwalls;
-    double *wall_history;    /* [particle][wall][history_size], particles in snapshot order */
+    int nwalls;              /* walls of the case that wrote it (wall contacts name their index) */
+    long count;
+    int64_t *keys;           /* 2 per contact: ids (i, j), or (-1 - wall, particle id) */
+    double *history;         /* history_size per contact */
     int forces_read;         /* reader: p->f and p->torque hold the snapshot's forces */
 } contact_state;
 

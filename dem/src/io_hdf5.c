@@ -407,15 +407,13 @@ static void write_dataset(hid_t group, const char *name, hid_t file_type, hid_t 
 
 void contact_state_free(contact_state *cs)
 {
-    free(cs->pair_ids);
-    free(cs->pair_history);
-    free(cs->wall_history);
+    free(cs->keys);
+    free(cs->history);
     memset(cs, 0, sizeof *cs);
 }
 
-/* A 2-D dataset of doubles or int64 with `cols` columns, compressed (deflate, level 1): the
- * contact history is mostly zeros (a particle touches few of the walls), which would otherwise
- * double the size of a snapshot. */
+/* A 2-D dataset of doubles or int64 with `cols` columns, compressed (deflate, level 1): much of
+ * a contact's history is zeros. */
 static void write_matrix(hid_t group, const char *name, hid_t file_type, hid_t mem_type,
                          const void *data, int64_t rows, int64_t cols, const char *path)
 {
@@ -437,17 +435,14 @@ static void write_matrix(hid_t group, const char *name, hid_t file_type, hid_t m
     H5Sclose(space);
 }
 
-static void write_contacts(hid_t g, const contact_state *cs, int64_t n, const char *path)
+static void write_contacts(hid_t g, const contact_state *cs, const char *path)
 {
     hid_t c = chk(H5Gcreate2(g, "contacts", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), path,
                   "cannot create contacts group");
     write_scalar_attr(c, "history_size", H5T_STD_I32LE, H5T_NATIVE_INT, &cs->history_size, path);
     write_scalar_attr(c, "nwalls", H5T_STD_I32LE, H5T_NATIVE_INT, &cs->nwalls, path);
-    write_matrix(c, "pair_ids", H5T_STD_I64LE, H5T_NATIVE_INT64, cs->pair_ids, cs->npairs, 2, path);
-    write_matrix(c, "pair_history", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, cs->pair_history, cs->npairs,
-                 cs->history_size, path);
-    write_matrix(c, "wall_history", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, cs->wall_history, n,
-                 (int64_t)cs->nwalls * cs->history_size, path);
+    write_matrix(c, "keys", H5T_STD_I64LE, H5T_NATIVE_INT64, cs->keys, cs->count, 2, path);
+    write_matrix(c, "history", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, cs->history, cs->count, cs->history_size, path);
     H5Gclose(c);
 }
 
@@ -477,7 +472,7 @@ void io_write_snapshot_contacts(particle_writer *w, const particles *p, double t
     write_dataset(g, "radius", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, p->radius, n, 0, "m", path);
     write_dataset(g, "id", H5T_STD_I64LE, H5T_NATIVE_INT64, p->id, n, 0, NULL, path);
     write_dataset(g, "type", H5T_STD_I32LE, H5T_NATIVE_INT, p->type, n, 0, NULL, path);
-    if (cs && cs->history_size > 0) write_contacts(g, cs, n, path);
+    if (cs && cs->history_size > 0) write_contacts(g, cs, path);
 
     const long long step_ll = step;
     write_scalar_attr(g, "time", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &time, path);
@@ -552,7 +547,7 @@ static void *read_matrix(hid_t group, const char *name, hid_t mem_type, size_t e
     return data;
 }
 
-static void read_contacts(hid_t g, contact_state *cs, int64_t n, const char *path)
+static void read_contacts(hid_t g, contact_state *cs, const char *path)
 {
     memset(cs, 0, sizeof *cs);
     if (!chk(H5Lexists(g, "contacts", H5P_DEFAULT), path, "cannot query contacts group")) return;
@@ -560,15 +555,19 @@ static void read_contacts(hid_t g, contact_state *cs, int64_t n, const char *pat
     if (!read_scalar_attr(c, "history_size", H5T_NATIVE_INT, &cs->history_size, path) ||
         !read_scalar_attr(c, "nwalls", H5T_NATIVE_INT, &cs->nwalls, path))
         dem_fatal("HDF5 file '%s': contacts group without history_size/nwalls", path);
+    if (!chk(H5Lexists(c, "keys", H5P_DEFAULT), path, "cannot query contacts/keys")) {
+        dem_warning("HDF5 file '%s': the snapshot's contact history is in an older layout (pair_ids, "
+                    "wall_history); contacts start afresh", path);
+        H5Gclose(c);
+        cs->history_size = 0;
+        return;
+    }
     int64_t rows;
-    cs->pair_ids = read_matrix(c, "pair_ids", H5T_NATIVE_INT64, sizeof(int64_t), 2, &rows, path);
-    cs->npairs = (long)rows;
-    cs->pair_history = read_matrix(c, "pair_history", H5T_NATIVE_DOUBLE, sizeof(double),
-                                   cs->history_size, &rows, path);
-    if (rows != cs->npairs) dem_fatal("HDF5 file '%s': contacts/pair_history has %" PRId64 " rows for %ld pairs", path, rows, cs->npairs);
-    cs->wall_history = read_matrix(c, "wall_history", H5T_NATIVE_DOUBLE, sizeof(double),
-                                   (int64_t)cs->nwalls * cs->history_size, &rows, path);
-    if (rows != n) dem_fatal("HDF5 file '%s': contacts/wall_history has %" PRId64 " rows for %" PRId64 " particles", path, rows, n);
+    cs->keys = read_matrix(c, "keys", H5T_NATIVE_INT64, sizeof(int64_t), 2, &rows, path);
+    cs->count = (long)rows;
+    cs->history = read_matrix(c, "history", H5T_NATIVE_DOUBLE, sizeof(double), cs->history_size, &rows, path);
+    if (rows != cs->count)
+        dem_fatal("HDF5 file '%s': contacts/history has %" PRId64 " rows for %ld keys", path, rows, cs->count);
     H5Gclose(c);
 }
 
@@ -635,7 +634,7 @@ int io_read_snapshot_at(const char *base, double at_time, double tolerance, part
         memset(p->f_ext, 0, (size_t)n * sizeof *p->f_ext);
     }
     if (cs) {
-        read_contacts(g, cs, n, path);
+        read_contacts(g, cs, path);
         if (chk(H5Lexists(g, "torque", H5P_DEFAULT), path, "cannot query torque dataset")) {
             read_dataset(g, "force", H5T_NATIVE_DOUBLE, p->f, n, 1, path);
             read_dataset(g, "torque", H5T_NATIVE_DOUBLE, p->torque, n, 1, path);

@@ -1,5 +1,6 @@
 /* Linked cells and a half Verlet list with skin. Each pair is stored once (under one of its
- * particles), with its contact history beside it; the history survives rebuilds and sorts.
+ * particles, a real one; the other may be a periodic image, ghosts.h), with its contact history
+ * beside it; contacts.c carries the history across rebuilds and sorts by particle ids.
  * The list is rebuilt only when some particle has moved more than half the skin since the
  * last build (system_step measures that while it moves the particles). Every sortInterval-th rebuild first re-orders the particles by cell, so that
  * neighbours are near each other in memory. */
@@ -15,11 +16,12 @@ typedef struct neighbour_list {
     int history_size;            /* doubles per pair */
     int history_antisymmetric;   /* leading doubles that change sign when i and j swap */
     /* CSR half list: partners of i are partner[start[i] .. start[i+1]) */
-    int *start;
+    int *start;                  /* rows_capacity entries */
     int *partner;
     double *history;             /* history_size doubles per pair */
     unsigned char *touching;     /* per pair: in contact at the last force computation */
-    long npairs, capacity;
+    long npairs, capacity, history_capacity;
+    int rows_capacity;
     int rows;                    /* particles the list was built for */
     vec3 *x_at_build;            /* positions at the last build */
     int build_capacity;
@@ -34,7 +36,8 @@ typedef struct neighbour_list {
 struct dem_system;
 void neighbour_init(neighbour_list *nl, double skin, int sort_interval, int history_size);
 void neighbour_free(neighbour_list *nl);
-/* Rebuild (sorting first when due); permutes the per-particle wall histories along. */
+/* Rebuild: wrap the particles into the box, sort them by cell when due, make the periodic
+ * images, build the list; every pair's history starts at zero. */
 void neighbour_rebuild(struct dem_system *s);
 
 #endif

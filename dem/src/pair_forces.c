@@ -18,7 +18,7 @@
 #define CHUNK 64
 
 static ALWAYS_INLINE void pair_loop(dem_system *s, const int normal, const int tangential, const int cohesion,
-                                    const int rolling, const int surface, const int periodic)
+                                    const int rolling, const int surface)
 {
     particles *p = &s->p;
     neighbour_list *nl = &s->nlist;
@@ -35,9 +35,8 @@ static ALWAYS_INLINE void pair_loop(dem_system *s, const int normal, const int t
                    surface_history_size(surface);
     const int needs_radius = contact_needs_radius(normal, cohesion, surface);
     const double reach = normal_has_reach(normal) ? s->contact_reach : 0.0;
-    const contact_models *models = &s->models;
-    const double period[3] = {s->period[0], s->period[1], s->period[2]};
-    const double inv_period[3] = {s->inv_period[0], s->inv_period[1], s->inv_period[2]};
+    const contact_models models_copy = s->models;   /* a local copy: no store in the loop can alias it */
+    const contact_models *models = &models_copy;
     const material_table *mt = &s->materials;
     double max_overlap = 0.0;
     int touching[CHUNK];
@@ -54,10 +53,8 @@ static ALWAYS_INLINE void pair_loop(dem_system *s, const int normal, const int t
             int nc = 0;
             for (int kk = k0; kk < k1; kk++) {
                 const int j = partner[kk];
-                double d[3] = {xi - x[j][0], yi - x[j][1], zi - x[j][2]};
-                if (periodic)
-                    for (int c = 0; c < 3; c++) d[c] -= period[c] * nearbyint(d[c] * inv_period[c]);
-                const double radsum = ri + rad[j] + reach;
+                const double d[3] = {xi - x[j][0], yi - x[j][1], zi - x[j][2]};   /* j may be an image */
+                const double radsum = normal_has_reach(normal) ? ri + rad[j] + reach : ri + rad[j];
                 const double rsq = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
                 const int touch = rsq < radsum * radsum;
                 touching[nc] = kk;
@@ -76,7 +73,9 @@ static ALWAYS_INLINE void pair_loop(dem_system *s, const int normal, const int t
                 const double *d = sep[mm], rsq = sep[mm][3];
                 const double rj = rad[j], mj = mass[j], radsum = ri + rj;
                 const pair_coeffs *c = &row[type[j]];
-                contact k = {.dt = dt, .step = step};
+                contact k;   /* the fields the models need are set below */
+                k.dt = dt;
+                k.step = step;
                 /* one division serves 1/r, R* and m* (divisions dominate this loop's cost) */
                 const double r = sqrt(rsq);
                 const double q = 1.0 / (r * radsum * (mi + mj));
@@ -95,7 +94,7 @@ static ALWAYS_INLINE void pair_loop(dem_system *s, const int normal, const int t
                     k.wi[q3] = w[i][q3];
                     k.wj[q3] = w[j][q3];
                 }
-                if (needs_radius) k.a2 = contact_radius_sq_pair(ri, rj, r);
+                k.a2 = needs_radius ? contact_radius_sq_pair(ri, rj, r) : 0.0;
                 if (rolling != rolling_none) {
                     const double ii = 1.0 / inv_inertia[i], ij = 1.0 / inv_inertia[j];
                     k.rolling_lever = k.r_eff;
@@ -106,18 +105,9 @@ static ALWAYS_INLINE void pair_loop(dem_system *s, const int normal, const int t
                     k.key_lo = (uint64_t)(id[i] < id[j] ? id[i] : id[j]);
                     k.key_hi = (uint64_t)(id[i] < id[j] ? id[j] : id[i]);
                 }
-                double fc[3], tci[3], tcj[3];
                 if (!contact_evaluate(normal, tangential, cohesion, rolling, surface, models, c, &k,
-                                      hist + (size_t)kk * hs, fc, tci, tcj))
-                    continue;
-                for (int q3 = 0; q3 < 3; q3++) {
-                    fi[q3] += fc[q3];
-                    f[j][q3] -= fc[q3];
-                    if (tangential != tangential_none || rolling != rolling_none) {
-                        ti[q3] += tci[q3];
-                        t[j][q3] += tcj[q3];
-                    }
-                }
+                                      hist + (size_t)kk * hs, fi, f[j], ti, t[j]))
+                    was_touching[kk] = 0;   /* within the reach, but no contact (a JKR neck broke) */
             }
         }
         for (int q = 0; q < 3; q++) {
@@ -132,33 +122,22 @@ static ALWAYS_INLINE void pair_loop(dem_system *s, const int normal, const int t
 #define PAIR_KERNEL(N, T, C, R, S)                                                                     \
     static void pair_##N##_##T##_##C##_##R##_##S(dem_system *s)                                        \
     {                                                                                                  \
-        pair_loop(s, normal_##N, tangential_##T, cohesion_##C, rolling_##R, surface_##S, 0);           \
-    }                                                                                                  \
-    static void pair_##N##_##T##_##C##_##R##_##S##_periodic(dem_system *s)                             \
-    {                                                                                                  \
-        pair_loop(s, normal_##N, tangential_##T, cohesion_##C, rolling_##R, surface_##S, 1);           \
+        pair_loop(s, normal_##N, tangential_##T, cohesion_##C, rolling_##R, surface_##S);              \
     }
 SPECIALISED_KERNELS(PAIR_KERNEL)
 
 static void pair_generic(dem_system *s)
 {
     const contact_models *m = &s->models;
-    pair_loop(s, m->normal, m->tangential, m->cohesion, m->rolling, m->surface, 0);
-}
-static void pair_generic_periodic(dem_system *s)
-{
-    const contact_models *m = &s->models;
-    pair_loop(s, m->normal, m->tangential, m->cohesion, m->rolling, m->surface, 1);
+    pair_loop(s, m->normal, m->tangential, m->cohesion, m->rolling, m->surface);
 }
 
-#define PAIR_ENTRY(N, T, C, R, S) {pair_##N##_##T##_##C##_##R##_##S, pair_##N##_##T##_##C##_##R##_##S##_periodic},
-static void (*const kernels[][2])(dem_system *) = {SPECIALISED_KERNELS(PAIR_ENTRY)};   /* [periodic] */
+#define PAIR_ENTRY(N, T, C, R, S) pair_##N##_##T##_##C##_##R##_##S,
+static void (*const kernels[])(dem_system *) = {SPECIALISED_KERNELS(PAIR_ENTRY)};
 
 void pair_forces_add(dem_system *s)
 {
-    const int periodic = s->periodic[0] || s->periodic[1] || s->periodic[2];
     const int q = s->generic_kernels ? -1 : contact_specialised(&s->models);
-    if (q >= 0) kernels[q][periodic](s);
-    else if (periodic) pair_generic_periodic(s);
+    if (q >= 0) kernels[q](s);
     else pair_generic(s);
 }

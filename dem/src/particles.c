@@ -67,6 +67,22 @@ static void permute_array(void *data, size_t elem, int n, const int *order, void
     memcpy(data, scratch, (size_t)n * elem);
 }
 
+void particles_copy(particles *p, int src, int dst)
+{
+    memcpy(p->x[dst], p->x[src], sizeof(vec3));
+    memcpy(p->v[dst], p->v[src], sizeof(vec3));
+    memcpy(p->omega[dst], p->omega[src], sizeof(vec3));
+    memcpy(p->f[dst], p->f[src], sizeof(vec3));
+    memcpy(p->torque[dst], p->torque[src], sizeof(vec3));
+    memcpy(p->f_ext[dst], p->f_ext[src], sizeof(vec3));
+    p->radius[dst] = p->radius[src];
+    p->mass[dst] = p->mass[src];
+    p->inv_mass[dst] = p->inv_mass[src];
+    p->inv_inertia[dst] = p->inv_inertia[src];
+    p->type[dst] = p->type[src];
+    p->id[dst] = p->id[src];
+}
+
 void particles_permute(particles *p, const int *order)
 {
     void *scratch = dem_malloc((size_t)p->n * sizeof(vec3));

@@ -32,6 +32,8 @@ int particles_add(particles *p, const double x[3], const double v[3], double rad
                   double density, int type, int64_t id);
 /* Recompute mass, inverse mass and inverse inertia from radius and a per-type density. */
 void particles_set_mass(particles *p, int i, double density);
+/* Copy every quantity of particle src to index dst (within the capacity). */
+void particles_copy(particles *p, int src, int dst);
 /* Reorder all arrays so that new index k holds old index order[k]. */
 void particles_permute(particles *p, const int *order);
 

@@ -1,8 +1,7 @@
 /* Symmetry planes: a frictionless, perfectly elastic mirror for the particle centres.
  *
  * A symmetry plane exerts no force, so it is not a wall: it is in no wall force loop, has no
- * material, no candidate list and no contact history, and does not count towards
- * DEM_MAX_WALLS. A particle's centre may reach the plane (the sphere then sticks out across
+ * material, no candidate list and no contact history. A particle's centre may reach the plane (the sphere then sticks out across
  * it; no image particles are made, as in DPMFoam). When a centre has crossed the plane during
  * the drift of a step, its motion is mirrored at the crossing:
  *

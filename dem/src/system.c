@@ -19,30 +19,19 @@ void system_free(dem_system *s)
 {
     particles_free(&s->p);
     neighbour_free(&s->nlist);
-    free(s->wall_history);
-    for (int k = 0; k < DEM_MAX_WALLS; k++) free(s->wall_candidates[k]);
+    walls_free(s);
+    ghosts_free(&s->ghosts);
+    contact_store_free(&s->carried);
     memset(s, 0, sizeof *s);
 }
 
-void system_resize_wall_history(dem_system *s, int old_n)
-{
-    const size_t block = (size_t)s->nwalls * s->history_size;
-    s->wall_history = dem_realloc(s->wall_history, (size_t)(s->p.n ? s->p.n : 1) * (block ? block : 1) * sizeof(double));
-    if (s->p.n > old_n)
-        memset(s->wall_history + (size_t)old_n * block, 0, (size_t)(s->p.n - old_n) * block * sizeof(double));
-}
-
+/* A new neighbour list and wall lists, the contacts' history carried across by particle ids. */
 static void rebuild(dem_system *s)
 {
+    contacts_gather(s, &s->carried);
     neighbour_rebuild(s);
     walls_build_candidates(s);
-}
-
-void system_setup(dem_system *s)
-{
-    system_setup_begin(s);
-    system_setup_finish_list(s);
-    system_compute_forces(s);
+    contacts_scatter(s, &s->carried);
 }
 
 /* Each chosen model's derived constants per material pair, and the reach of the normal model
@@ -53,9 +42,8 @@ static void prepare_models(dem_system *s)
     for (int slot = 0; slot < SLOT_COUNT; slot++) {
         const contact_model *d = system_model(s, slot);
         if (d->prepare)
-            for (int a = 0; a < DEM_MAX_TYPES; a++)
-                for (int b = 0; b < DEM_MAX_TYPES; b++)
-                    if (a < t->ntypes && b < t->ntypes) d->prepare(t->pair[a * DEM_MAX_TYPES + b].model[slot]);
+            for (int a = 0; a < t->ntypes; a++)
+                for (int b = 0; b < t->ntypes; b++) d->prepare(t->pair[a * DEM_MAX_TYPES + b].model[slot]);
     }
     const contact_model *normal = system_model(s, SLOT_NORMAL);
     s->contact_reach = 0.0;
@@ -70,11 +58,13 @@ static void prepare_models(dem_system *s)
     s->nlist.reach = s->contact_reach;
 }
 
-void system_setup_begin(dem_system *s)
+long system_setup_with_contacts(dem_system *s, const contact_store *saved, int compute_forces)
 {
     s->history_size = contact_history_size(&s->models);
     s->nlist.history_size = s->history_size;
     s->nlist.history_antisymmetric = contact_history_antisymmetric(&s->models);
+    contact_store_free(&s->carried);
+    contact_store_init(&s->carried, s->history_size, s->nlist.history_antisymmetric);
     for (int d = 0; d < 3; d++) {
         s->period[d] = s->periodic[d] ? s->domain_max[d] - s->domain_min[d] : 0.0;
         s->inv_period[d] = s->periodic[d] ? 1.0 / s->period[d] : 0.0;
@@ -84,19 +74,25 @@ void system_setup_begin(dem_system *s)
         for (int i = 0; i < s->p.n; i++) rmin = fmin(rmin, s->p.radius[i]);
         s->nlist.skin = s->p.n ? 0.2 * rmin : 1e-3;   /* 10 % of the smallest diameter */
     }
-    system_resize_wall_history(s, 0);
     prepare_models(s);
+    neighbour_rebuild(s);
+    walls_build_candidates(s);
+    const long found = saved ? contacts_scatter(s, saved) : 0;
+    if (compute_forces) system_compute_forces(s);
+    return found;
 }
 
-void system_setup_finish_list(dem_system *s)
+void system_setup(dem_system *s)
 {
-    rebuild(s);
+    system_setup_with_contacts(s, NULL, 1);
 }
 
 static void add_contact_forces(dem_system *s)
 {
     s->max_overlap_seen = 0.0;
+    ghosts_update(s);
     pair_forces_add(s);
+    ghosts_fold_forces(s);
     walls_add_forces(s);
 }
 

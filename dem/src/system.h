@@ -3,6 +3,8 @@
 #define DEM_SYSTEM_H
 
 #include "contact/models.h"
+#include "contacts.h"
+#include "ghosts.h"
 #include "materials.h"
 #include "neighbour.h"
 #include "particles.h"
@@ -22,15 +24,15 @@ typedef struct dem_system {
     double period[3];                 /* box length in periodic directions, 0 otherwise */
     double inv_period[3];             /* 1/period, 0 in non-periodic directions */
 
-    int nwalls;
-    wall walls[DEM_MAX_WALLS];
-    double *wall_history;             /* [particle][wall][history_size] */
-    int *wall_candidates[DEM_MAX_WALLS];   /* particles within radius + skin of each wall */
-    int wall_ncandidates[DEM_MAX_WALLS];
+    int nwalls, wall_capacity;
+    wall *walls;                      /* walls_add() appends */
+    wall_contacts *wall_lists;        /* per wall: the particles near it and their contact history */
     int nsymmetry;                    /* symmetry planes: mirrors without force (symmetry.h) */
     symmetry_plane symmetry_planes[DEM_MAX_SYMMETRY_PLANES];
 
     neighbour_list nlist;
+    ghost_list ghosts;                /* periodic images, stored after the particles (ghosts.h) */
+    contact_store carried;            /* the contacts' history across a rebuild (contacts.h) */
 
     double gravity[3];                /* [m/s^2] */
     double dt;                        /* [s] */
@@ -47,12 +49,10 @@ void system_free(dem_system *s);
 /* After particles, materials, models, walls are set: allocate histories, build the list,
  * compute the first forces. */
 void system_setup(dem_system *s);
-/* system_setup in two halves, for a restart that fills the wall history in between:
- * begin sizes histories and the skin; finish_list builds the neighbour list. */
-void system_setup_begin(dem_system *s);
-void system_setup_finish_list(dem_system *s);
-/* Resize the wall history to the current particle count (new entries zeroed). */
-void system_resize_wall_history(dem_system *s, int old_n);
+/* The same, with the contact history of a store (contacts.h) put back onto the new lists, and
+ * the first forces only if compute_forces (a restart keeps its snapshot's); returns how many
+ * contacts were found. */
+long system_setup_with_contacts(dem_system *s, const contact_store *saved, int compute_forces);
 /* One velocity-Verlet step. */
 void system_step(dem_system *s);
 /* Forces for the current positions (pairs, walls, gravity, external). */

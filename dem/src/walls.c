@@ -42,34 +42,67 @@ int wall_gap(const wall *w, const double x[3], double radius, double *gap, doubl
     return 1;
 }
 
-/* Refresh the candidate lists (called after each neighbour-list build). */
+wall *walls_add(dem_system *s)
+{
+    if (s->nwalls == s->wall_capacity) {
+        s->wall_capacity = s->wall_capacity ? 2 * s->wall_capacity : 8;
+        s->walls = dem_realloc(s->walls, (size_t)s->wall_capacity * sizeof *s->walls);
+        s->wall_lists = dem_realloc(s->wall_lists, (size_t)s->wall_capacity * sizeof *s->wall_lists);
+    }
+    memset(&s->walls[s->nwalls], 0, sizeof *s->walls);
+    memset(&s->wall_lists[s->nwalls], 0, sizeof *s->wall_lists);
+    return &s->walls[s->nwalls++];
+}
+
+void walls_free(dem_system *s)
+{
+    for (int k = 0; k < s->nwalls; k++) {
+        free(s->wall_lists[k].particle);
+        free(s->wall_lists[k].history);
+        free(s->wall_lists[k].touching);
+    }
+    free(s->walls);
+    free(s->wall_lists);
+    s->walls = NULL;
+    s->wall_lists = NULL;
+    s->nwalls = s->wall_capacity = 0;
+}
+
+/* Refresh the candidate lists (called after each neighbour-list build): real particles only. */
 void walls_build_candidates(dem_system *s)
 {
     const particles *p = &s->p;
+    const int hs = s->history_size;
+    const double range = s->nlist.skin + s->contact_reach;
     for (int k = 0; k < s->nwalls; k++) {
-        s->wall_candidates[k] = dem_realloc(s->wall_candidates[k], (size_t)(p->n ? p->n : 1) * sizeof(int));
-        int count = 0;
+        wall_contacts *wc = &s->wall_lists[k];
+        /* bounded walls: test with the bounds widened by the range, cheaply, by testing the
+         * position itself and letting the force loop decide the exact bounds */
+        wall probe = s->walls[k];
+        if (probe.bounded)
+            for (int d = 0; d < 3; d++) {
+                probe.bounds_min[d] -= range;
+                probe.bounds_max[d] += range;
+            }
+        if (probe.kind == WALL_CYLINDER) {
+            probe.axial_min -= range;
+            probe.axial_max += range;
+        }
+        wc->n = 0;
         for (int i = 0; i < p->n; i++) {
             double gap, en[3];
-            /* bounded walls: test with the bounds widened by the skin, cheaply, by testing the
-             * position itself and letting the force loop decide the exact bounds */
-            wall probe = s->walls[k];
-            if (probe.bounded)
-                for (int d = 0; d < 3; d++) {
-                    probe.bounds_min[d] -= s->nlist.skin;
-                    probe.bounds_max[d] += s->nlist.skin;
-                }
-            if (probe.kind == WALL_CYLINDER) {
-                probe.axial_min -= s->nlist.skin;
-                probe.axial_max += s->nlist.skin;
+            if (!wall_gap(&probe, p->x[i], p->radius[i], &gap, en) || gap >= range) continue;
+            if (wc->n == wc->capacity) {
+                wc->capacity = wc->capacity ? 2 * wc->capacity : 256;
+                wc->particle = dem_realloc(wc->particle, (size_t)wc->capacity * sizeof(int));
+                wc->history = dem_realloc(wc->history, (size_t)wc->capacity * (hs ? hs : 1) * sizeof(double));
+                wc->touching = dem_realloc(wc->touching, (size_t)wc->capacity);
             }
-            if (wall_gap(&probe, p->x[i], p->radius[i], &gap, en) && gap < s->nlist.skin + s->contact_reach)
-                s->wall_candidates[k][count++] = i;
-            else if (s->history_size > 0)
-                memset(s->wall_history + ((size_t)i * s->nwalls + k) * s->history_size, 0,
-                       (size_t)s->history_size * sizeof(double));
+            wc->particle[wc->n] = i;
+            memset(wc->history + (size_t)wc->n * hs, 0, (size_t)hs * sizeof(double));
+            wc->touching[wc->n] = 0;
+            wc->n++;
         }
-        s->wall_ncandidates[k] = count;
     }
 }
 
@@ -89,14 +122,15 @@ static ALWAYS_INLINE void wall_loop(dem_system *s, const int normal, const int t
     double fw[3] = {0.0, 0.0, 0.0};   /* the walls' total force on the particles */
     for (int q = 0; q < s->nwalls; q++) {
         const wall *wl = &s->walls[q];
-        const int *cand = s->wall_candidates[q];
-        for (int m = 0; m < s->wall_ncandidates[q]; m++) {
-            const int i = cand[m];
-            double *h = s->wall_history + ((size_t)i * s->nwalls + q) * hs;
+        wall_contacts *wc = &s->wall_lists[q];
+        for (int m = 0; m < wc->n; m++) {
+            const int i = wc->particle[m];
+            double *h = wc->history + (size_t)m * hs;
             contact k = {.dt = dt, .step = step};
             double gap;
             if (!wall_gap(wl, p->x[i], p->radius[i], &gap, k.en) || gap >= reach) {
                 for (int c = 0; c < hs; c++) h[c] = 0.0;
+                wc->touching[m] = 0;
                 continue;
             }
             const double ri = p->radius[i];
@@ -112,7 +146,7 @@ static ALWAYS_INLINE void wall_loop(dem_system *s, const int normal, const int t
                 k.wi[d] = p->omega[i][d];
                 k.wj[d] = 0.0;
             }
-            if (needs_radius) k.a2 = contact_radius_sq_wall(ri, k.delta);
+            k.a2 = needs_radius ? contact_radius_sq_wall(ri, k.delta) : 0.0;
             if (rolling != rolling_none) {
                 k.rolling_lever = k.lever_i;                    /* as LIGGGHTS' cdt at a wall */
                 k.rolling_inertia = 3.5 / p->inv_inertia[i];    /* 1.4 m r^2 = 3.5 I */
@@ -122,14 +156,14 @@ static ALWAYS_INLINE void wall_loop(dem_system *s, const int normal, const int t
                 k.key_lo = ~(uint64_t)q;
                 k.key_hi = (uint64_t)p->id[i];
             }
-            double fc[3], tci[3], tcj[3];
-            if (!contact_evaluate(normal, tangential, cohesion, rolling, surface, &s->models, c, &k, h, fc, tci, tcj))
-                continue;
+            double fc[3] = {0.0, 0.0, 0.0}, f_wall[3] = {0.0, 0.0, 0.0}, t_wall[3] = {0.0, 0.0, 0.0};   /* the wall's share: unused */
+            wc->touching[m] = (unsigned char)contact_evaluate(normal, tangential, cohesion, rolling, surface,
+                                                              &s->models, c, &k, h, fc, f_wall, p->torque[i], t_wall);
+            if (!wc->touching[m]) continue;
             if (surface != surface_default) surface_wall_guard(surface, &s->models, k.en, fc, p->v[i]);
             for (int d = 0; d < 3; d++) {
                 p->f[i][d] += fc[d];
                 fw[d] += fc[d];
-                if (tangential != tangential_none || rolling != rolling_none) p->torque[i][d] += tci[d];
             }
         }
     }

@@ -5,8 +5,6 @@
 #ifndef DEM_WALLS_H
 #define DEM_WALLS_H
 
-#define DEM_MAX_WALLS 32
-
 enum wall_kind { WALL_PLANE, WALL_CYLINDER };
 
 typedef struct wall {
@@ -25,10 +23,23 @@ typedef struct wall {
     double axial_min, axial_max;           /* extent along the axis */
 } wall;
 
+/* The particles within radius + skin (+ the normal model's reach) of one wall, refreshed at each
+ * neighbour-list build, each with its contact history beside it. */
+typedef struct wall_contacts {
+    int n, capacity;
+    int *particle;               /* particle indices */
+    double *history;             /* history_size doubles per candidate */
+    unsigned char *touching;     /* in contact at the last force computation */
+} wall_contacts;
+
 struct dem_system;
+/* Append a wall (its fields zeroed) to the system; there is no limit on their number. */
+wall *walls_add(struct dem_system *s);
+void walls_free(struct dem_system *s);
 /* Add wall forces to p->f / p->torque (kernel chosen once per model combination). */
 void walls_add_forces(struct dem_system *s);
-/* Refresh each wall's list of particles within radius + skin (after a neighbour build). */
+/* Refresh each wall's list of particles within radius + skin (after a neighbour build); the
+ * histories start at zero (contacts.c puts back those of continuing contacts). */
 void walls_build_candidates(struct dem_system *s);
 /* Signed gap from a sphere surface to the wall (negative: overlap) and the unit normal from the
  * wall to the centre; returns 0 if the wall does not act at this position (outside bounds). */

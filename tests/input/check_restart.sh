@@ -49,7 +49,7 @@ def final(path):
 t_a, xa, _ = final(f"{work}/straight/particles.h5")
 t_b, xb, last_b = final(f"{work}/split/particles.h5")
 diff = np.abs(xa - xb).max()
-pairs = last_b["contacts/pair_ids"].shape[0] if "contacts" in last_b else 0
+pairs = last_b["contacts/keys"].shape[0] if "contacts" in last_b else 0
 print(f"settled bed: {pairs} contacts saved; largest position difference restart vs straight run {diff:.3g} m")
 checks = [
     ("restart message names t = 0.01 s", "restart from" in log and "t = 0.01 s" in log),

@@ -64,7 +64,7 @@ static inline int add_sphere(dem_system *s, double x, double y, double z, double
 
 static inline void add_plane(dem_system *s, double px, double py, double pz, double nx, double ny, double nz)
 {
-    wall *w = &s->walls[s->nwalls++];
+    wall *w = walls_add(s);
     memset(w, 0, sizeof *w);
     snprintf(w->name, sizeof w->name, "plane%d", s->nwalls);
     w->kind = WALL_PLANE;

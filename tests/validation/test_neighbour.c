@@ -1,10 +1,17 @@
 /* Neighbour list: every pair closer than r_i + r_j + skin is in the half list exactly once
- * (brute force over all pairs), with and without periodic directions, after particles were
+ * (brute force over all pairs, by minimum image; a listed periodic image counts for its owner),
+ * with and without periodic directions, after particles were
  * re-sorted by cell; and a contact's tangential history survives rebuilds and re-sorting. */
 #include <stdlib.h>
 
 #include "harness.h"
 #include "rng.h"
+
+/* the real particle behind a list partner (a periodic image stands for its owner) */
+static int real_of(const dem_system *s, int j)
+{
+    return j < s->p.n ? j : s->ghosts.owner[j - s->p.n];
+}
 
 static int count_missing(const dem_system *s, int *duplicates)
 {
@@ -23,8 +30,8 @@ static int count_missing(const dem_system *s, int *duplicates)
             const double cut = p->radius[i] + p->radius[j];   /* in contact range now */
             if (d2 >= cut * cut) continue;
             int found = 0;
-            for (int k = nl->start[i]; k < nl->start[i + 1]; k++) found += nl->partner[k] == j;
-            for (int k = nl->start[j]; k < nl->start[j + 1]; k++) found += nl->partner[k] == i;
+            for (int k = nl->start[i]; k < nl->start[i + 1]; k++) found += real_of(s, nl->partner[k]) == j;
+            for (int k = nl->start[j]; k < nl->start[j + 1]; k++) found += real_of(s, nl->partner[k]) == i;
             if (found == 0) missing++;
             if (found > 1) (*duplicates)++;
         }

@@ -65,7 +65,7 @@
 
 static wall *add_wall(dem_system *s)
 {
-    wall *w = &s->walls[s->nwalls++];
+    wall *w = walls_add(s);
     memset(w, 0, sizeof *w);
     snprintf(w->name, sizeof w->name, "wall%d", s->nwalls);
     return w;

@@ -101,13 +101,14 @@ static ALWAYS_INLINE int contact_needs_radius(int normal, int cohesion, int surf
     return normal_needs_radius(normal) || cohesion_needs_radius(cohesion) || surface_needs_radius(surface);
 }
 
-/* The forces of one contact: the force on i (j gets minus it) and the torques on i and j;
+/* The forces of one contact, added to the sums of i and j: the force on i to fi, its opposite
+ * to fj, the torques on i and j to ti and tj;
  * h: the contact's history, [tangential][rolling][normal][surface]. k->vn is set here (along
  * the normal the forces use). Returns 0, with the history cleared, if the normal model finds no
  * contact (a model with a reach, outside its neck). */
 static ALWAYS_INLINE int contact_evaluate(int normal, int tangential, int cohesion, int rolling, int surface,
                                           const contact_models *m, const pair_coeffs *c, contact *k,
-                                          double *restrict h, double f[3], double ti[3], double tj[3])
+                                          double *restrict h, double fi[3], double fj[3], double ti[3], double tj[3])
 {
     const int h_roll = tangential_history_size(tangential), h_norm = h_roll + rolling_history_size(rolling);
     const int h_surf = h_norm + normal_history_size(normal), hs = h_surf + surface_history_size(surface);
@@ -123,9 +124,7 @@ static ALWAYS_INLINE int contact_evaluate(int normal, int tangential, int cohesi
     }
     if (!(n.fn > m->fn_floor)) n.fn = m->fn_floor;   /* limitForce */
     const double fn = cohesion != cohesion_none ? n.fn + cohesion_force(cohesion, k, c) : n.fn;
-    f[0] = fn * en_f[0]; f[1] = fn * en_f[1]; f[2] = fn * en_f[2];
-    ti[0] = ti[1] = ti[2] = 0.0;
-    tj[0] = tj[1] = tj[2] = 0.0;
+    double f[3] = {fn * en_f[0], fn * en_f[1], fn * en_f[2]};
     if (tangential != tangential_none) {
         /* contact-point velocity: lever arms to the centre of the overlap */
         const double cri = k->lever_i, crj = k->lever_j;
@@ -151,6 +150,10 @@ static ALWAYS_INLINE int contact_evaluate(int normal, int tangential, int cohesi
             ti[q] += mr[q];
             tj[q] -= mr[q];
         }
+    }
+    for (int q = 0; q < 3; q++) {
+        fi[q] += f[q];
+        fj[q] -= f[q];
     }
     return 1;
 }

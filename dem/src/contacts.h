@@ -1,0 +1,51 @@
+/* Contact history keyed by particle ids.
+ *
+ * The force loops keep each contact's history beside the contact (in the neighbour list's
+ * pairs, in each wall's candidate list), where a rebuild, a sort or a restart would lose it.
+ * So before every rebuild the histories of the contacts that touch are gathered into a store
+ * keyed by ids, and after it they are taken back onto the new lists; a restart fills the same
+ * store from the snapshot, and a snapshot is written from it. Nothing depends on particle
+ * indices, so sorting, periodic images and (later) ranks leave contacts intact.
+ *
+ * A pair is keyed by its two ids in the order the list held it (first = i): the antisymmetric
+ * part of the history (built from v_i - v_j) changes sign when the new list holds it as
+ * (j, i). A wall contact is keyed by (contact_wall_key(wall), particle id). */
+#ifndef DEM_CONTACTS_H
+#define DEM_CONTACTS_H
+
+#include <stdint.h>
+
+#include "io.h"
+
+typedef struct contact_store {
+    int history_size;        /* doubles per contact */
+    int antisymmetric;       /* its leading part that changes sign when (i, j) swap */
+    long count, capacity;    /* entries, slots (a power of two: open addressing) */
+    int64_t *first, *second; /* the key as held: ids (i, j), or (wall key, particle id) */
+    double *history;         /* history_size per slot */
+    unsigned char *used;
+} contact_store;
+
+/* Wall contacts carry the wall's index where a pair carries the first id (ids are >= 0). */
+static inline int64_t contact_wall_key(int wall) { return -1 - (int64_t)wall; }
+
+struct dem_system;
+void contact_store_init(contact_store *cs, int history_size, int antisymmetric);
+void contact_store_free(contact_store *cs);
+void contact_store_clear(contact_store *cs);
+void contact_store_put(contact_store *cs, int64_t first, int64_t second, const double *h);
+/* Copy the history of (first, second) into h (its antisymmetric part negated if the store held
+ * the pair as (second, first)); returns 1 if found. */
+int contact_store_take(const contact_store *cs, int64_t first, int64_t second, double *h);
+
+/* The histories of the system's touching contacts (pairs and walls) into the store. */
+void contacts_gather(const struct dem_system *s, contact_store *cs);
+/* Onto the current lists: each listed pair and wall candidate finds its history by its ids;
+ * returns how many were found. */
+long contacts_scatter(struct dem_system *s, const contact_store *cs);
+
+/* The flat form a snapshot holds (io.h), from and into a store. */
+void contacts_to_state(const contact_store *store, int nwalls, contact_state *state);
+void contacts_from_state(const contact_state *state, contact_store *store);
+
+#endif
