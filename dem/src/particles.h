@@ -29,7 +29,12 @@ enum { PF_WRITE = 1, PF_RESTART = 2, PF_MIGRATE = 4 };
  *     step's contact history; evaluating them again on restart would add the last tangential
  *     increment twice (restart.c). They migrate: the next step's first half kick uses them.
  *   - mass and the inverses follow from radius and the material's density: recomputed on
- *     restart (restart_read), moved along on migration (cheaper than looking up the material). */
+ *     restart (restart_read), moved along on migration (cheaper than looking up the material).
+ *   - The coupling's fields (coupling/src/coupling.c) are no restart fields: beta, u_fluid and
+ *     f_fluid are evaluated again from the fluid field at the start of every fluid step, before
+ *     any DEM step uses them, and a snapshot is written only between fluid steps. fluid_cell is
+ *     only where the search for the particle's cell starts (0 is as good a start as any), and
+ *     a cell number of one rank's mesh means nothing on another: it does not migrate. */
 #define PARTICLE_FIELDS(X)                                                                      \
     X(x,           vec3,   "m",        "position",        PF_WRITE | PF_RESTART | PF_MIGRATE)    \
     X(v,           vec3,   "m/s",      "velocity",        PF_WRITE | PF_RESTART | PF_MIGRATE)    \
@@ -47,7 +52,14 @@ enum { PF_WRITE = 1, PF_RESTART = 2, PF_MIGRATE = 4 };
     /* material index */                                                                       \
     X(type,        int,    "1",        "type",            PF_WRITE | PF_RESTART | PF_MIGRATE)    \
     /* global id, stable across sorting, restarts and ranks */                                 \
-    X(id,          int64,  "1",        "id",              PF_WRITE | PF_RESTART | PF_MIGRATE)
+    X(id,          int64,  "1",        "id",              PF_WRITE | PF_RESTART | PF_MIGRATE)    \
+    /* coupling: the fluid cell of the centre at the last exchange (-1: outside the mesh) */   \
+    X(fluid_cell,  int,    "1",        "fluid_cell",      0)                                     \
+    /* coupling: the fluid force is beta (u_fluid - v) + f_fluid, beta and u_fluid frozen at    \
+     * the exchange (beta 0 when explicit), f_fluid the part that does not depend on v */      \
+    X(beta,        double, "kg/s",     "drag_coefficient", PF_MIGRATE)                           \
+    X(u_fluid,     vec3,   "m/s",      "fluid_velocity",  PF_MIGRATE)                            \
+    X(f_fluid,     vec3,   "N",        "fluid_force_fixed", PF_MIGRATE)
 
 /* The element types the list may use: C type, components, scalar kind. */
 #define PF_CTYPE_vec3 vec3
