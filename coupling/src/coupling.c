@@ -9,7 +9,9 @@
  *   3. void fraction with the new positions; gather, evaluate the forces again with the same
  *      weights and velocities, and spread them onto the cells (exchange.h), so that what the
  *      fluid receives balances what the particles feel to round-off.
- * Per-particle coupling data is kept by particle id, since the DEM re-sorts its arrays. */
+ * What a particle keeps across DEM steps (its fluid cell, beta, u_f and the velocity-independent
+ * force) lives in the particle table (particles.h), so that it follows the DEM's sorting; the
+ * per-particle arrays here are rebuilt at each exchange, in the current order. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -46,14 +48,8 @@ struct coupling {
     int interval;
     /* per particle (current DEM order), rebuilt each exchange */
     int np_cap;
-    int *cell;
     double *d, *volume, *alpha_p;
     double (*u_p)[3], (*gp_p)[3];
-    /* per particle id: the last known cell and the fluid force to apply */
-    int64_t id_cap;
-    int *cell_of_id;
-    double *beta_of_id;
-    double (*uf_of_id)[3], (*fconst_of_id)[3];   /* f_exchange + f_equation */
     /* per cell */
     double *ksl;
     double (*up)[3], (*source)[3];
@@ -112,7 +108,6 @@ static void grow_particles(coupling *c, int n)
 {
     if (n <= c->np_cap) return;
     c->np_cap = n + n / 2 + 16;
-    c->cell = dem_realloc(c->cell, (size_t)c->np_cap * sizeof *c->cell);
     c->d = dem_realloc(c->d, (size_t)c->np_cap * sizeof *c->d);
     c->volume = dem_realloc(c->volume, (size_t)c->np_cap * sizeof *c->volume);
     c->alpha_p = dem_realloc(c->alpha_p, (size_t)c->np_cap * sizeof *c->alpha_p);
@@ -126,44 +121,24 @@ static void grow_particles(coupling *c, int n)
     c->tets_valid = 0;
 }
 
-static void grow_ids(coupling *c)
-{
-    int64_t max_id = 0;
-    for (int i = 0; i < c->s.p.n; i++) if (c->s.p.id[i] + 1 > max_id) max_id = c->s.p.id[i] + 1;
-    if (max_id <= c->id_cap) return;
-    const int64_t old = c->id_cap;
-    c->id_cap = max_id + max_id / 2 + 16;
-    c->cell_of_id = dem_realloc(c->cell_of_id, (size_t)c->id_cap * sizeof *c->cell_of_id);
-    c->beta_of_id = dem_realloc(c->beta_of_id, (size_t)c->id_cap * sizeof *c->beta_of_id);
-    c->uf_of_id = dem_realloc(c->uf_of_id, (size_t)c->id_cap * sizeof *c->uf_of_id);
-    c->fconst_of_id = dem_realloc(c->fconst_of_id, (size_t)c->id_cap * sizeof *c->fconst_of_id);
-    for (int64_t k = old; k < c->id_cap; k++) {   /* new particles: no fluid force until evaluated */
-        c->cell_of_id[k] = -1;
-        c->beta_of_id[k] = 0.0;
-        for (int q = 0; q < 3; q++) c->uf_of_id[k][q] = c->fconst_of_id[k][q] = 0.0;
-    }
-}
-
 static cpl_cell_weights weights_of(const coupling *c)
 {
     cpl_cell_weights w = {c->vf.np, c->vf.w_start, c->vf.w_cell, c->vf.w};
     return w;
 }
 
-/* Void fraction with the particles' current positions (cells by id as the walk's start). */
+/* Void fraction with the particles' current positions (each particle's last cell as the walk's
+ * start). */
 static void update_void_fraction(coupling *c)
 {
     particles *p = &c->s.p;
-    grow_ids(c);
     grow_particles(c, p->n);
-    for (int i = 0; i < p->n; i++) c->cell[i] = c->cell_of_id[p->id[i]];
-    const int outside = cpl_vf_compute(&c->vf, &c->mesh, p->n, (const double (*)[3])p->x, p->radius, c->cell);
+    const int outside = cpl_vf_compute(&c->vf, &c->mesh, p->n, (const double (*)[3])p->x, p->radius, p->fluid_cell);
     if (outside > 0 && outside != c->outside_reported) {
         dem_warning("coupling: %d particle(s) lie outside the fluid mesh at t = %g s; they feel no fluid "
                     "force and give none to the fluid", outside, c->s.time);
         c->outside_reported = outside;
     }
-    for (int i = 0; i < p->n; i++) c->cell_of_id[p->id[i]] = c->cell[i];
 }
 
 /* Fluid quantities at the particles and their forces, for the current weights and velocities.
@@ -189,11 +164,11 @@ static void evaluate_forces(coupling *c, const double (*U)[3], const double (*gr
         }
         if (c->interp_scheme == CPL_INTERP_CELL_POINT) {
             if (new_positions || !c->tets_valid)
-                cpl_interp_locate(&c->interp, &c->mesh, p->n, c->cell, (const double (*)[3])p->x, c->tets);
+                cpl_interp_locate(&c->interp, &c->mesh, p->n, p->fluid_cell, (const double (*)[3])p->x, c->tets);
             c->tets_valid = 1;
             cpl_interp_apply(&c->interp, &c->mesh, p->n, c->tets, &c->ugp_p[0][0]);
         } else {
-            cpl_interp_particles(&c->interp, &c->mesh, p->n, c->cell, (const double (*)[3])p->x, &c->ugp_p[0][0]);
+            cpl_interp_particles(&c->interp, &c->mesh, p->n, p->fluid_cell, (const double (*)[3])p->x, &c->ugp_p[0][0]);
         }
         for (int i = 0; i < p->n; i++)
             for (int q = 0; q < 3; q++) { c->u_p[i][q] = c->ugp_p[i][q]; c->gp_p[i][q] = c->ugp_p[i][3 + q]; }
@@ -203,27 +178,25 @@ static void evaluate_forces(coupling *c, const double (*U)[3], const double (*gr
         c->volume[i] = 4.0 / 3.0 * M_PI * p->radius[i] * p->radius[i] * p->radius[i];
     }
     const cpl_particle_fluid in = {p->n, (const double (*)[3])p->v, c->d, c->volume,
-                                   (const double (*)[3])c->u_p, (const double (*)[3])c->gp_p, c->alpha_p, c->cell};
+                                   (const double (*)[3])c->u_p, (const double (*)[3])c->gp_p, c->alpha_p, p->fluid_cell};
     cpl_fluid_forces_eval(&c->params, &in, &c->forces);
     for (int i = 0; i < p->n; i++) {
-        const int64_t id = p->id[i];
-        c->beta_of_id[id] = c->forces.beta[i];
+        p->beta[i] = c->forces.beta[i];
         for (int q = 0; q < 3; q++) {
-            c->uf_of_id[id][q] = c->forces.u_f[i][q];
-            c->fconst_of_id[id][q] = c->forces.f_exchange[i][q] + c->forces.f_equation[i][q];
+            p->u_fluid[i][q] = c->forces.u_f[i][q];
+            p->f_fluid[i][q] = c->forces.f_exchange[i][q] + c->forces.f_equation[i][q];
         }
     }
 }
 
-/* p->f_ext = the fluid force at each particle's current velocity (cpl_fluid_force, by id). */
+/* p->f_ext = the fluid force at each particle's current velocity (as cpl_fluid_force, from the
+ * particle table: the DEM may have re-sorted the particles since the evaluation). */
 static void apply_fluid_forces(coupling *c)
 {
     particles *p = &c->s.p;
     for (int i = 0; i < p->n; i++) {
-        const int64_t id = p->id[i];
-        const double b = c->beta_of_id[id];
-        for (int q = 0; q < 3; q++)
-            p->f_ext[i][q] = b * (c->uf_of_id[id][q] - p->v[i][q]) + c->fconst_of_id[id][q];
+        const double b = p->beta[i];
+        for (int q = 0; q < 3; q++) p->f_ext[i][q] = b * (p->u_fluid[i][q] - p->v[i][q]) + p->f_fluid[i][q];
     }
 }
 
@@ -256,8 +229,8 @@ static void warn_large_particles(const coupling *c)
     int count = 0;
     double worst = 0.0;
     for (int i = 0; i < p->n; i++) {
-        if (c->cell[i] < 0) continue;
-        const double ratio = 2.0 * p->radius[i] / cbrt(c->mesh.cell_volume[c->cell[i]]);
+        if (p->fluid_cell[i] < 0) continue;
+        const double ratio = 2.0 * p->radius[i] / cbrt(c->mesh.cell_volume[p->fluid_cell[i]]);
         if (ratio > 1.0) count++;
         worst = fmax(worst, ratio);
     }
@@ -469,8 +442,7 @@ void coupling_free(coupling *c)
     cpl_vf_free(&c->vf);
     cpl_mesh_free(&c->mesh);
     system_free(&c->s);
-    free(c->cell); free(c->d); free(c->volume); free(c->alpha_p); free(c->u_p); free(c->gp_p);
-    free(c->cell_of_id); free(c->beta_of_id); free(c->uf_of_id); free(c->fconst_of_id);
+    free(c->d); free(c->volume); free(c->alpha_p); free(c->u_p); free(c->gp_p);
     free(c->ksl); free(c->up); free(c->source);
     free(c);
 }

@@ -4,8 +4,10 @@
  * Layout of <base>.h5:
  *   /snapshots/<k>/  (k = 000000, 000001, ...) groups, one per snapshot, each with
  *       attributes time [s] (double), step (int64), n (int64), complete (int, written last)
- *       datasets  position (n x 3) [m], velocity (n x 3) [m/s], omega (n x 3) [rad/s],
- *                 force (n x 3) [N], radius (n) [m], id (n, int64), type (n, int32)
+ *       datasets  the particle fields flagged PF_WRITE or PF_RESTART in particles.h, each
+ *                 n or n x components, with a `units` attribute: today position (n x 3) [m],
+ *                 velocity [m/s], omega [rad/s], force [N], torque [N m] (n x 3), radius (n) [m],
+ *                 id (n, int64), type (n, int32); the XDMF index lists the PF_WRITE ones
  * The file is flushed after each snapshot, so a killed run leaves every snapshot before the
  * one being written readable; a snapshot without `complete` is ignored on restart.
  * <base>.xdmf is rewritten after each snapshot and lists the complete ones.
@@ -43,13 +45,14 @@ void io_write_snapshot_contacts(particle_writer *w, const particles *p, double t
                                 const contact_state *cs);
 void io_close_writer(particle_writer *w);
 
-/* Read the last complete snapshot of <base>.h5 into p (p is reset and refilled; masses are
- * left for the caller to set from the materials). Returns 0 on success, -1 when the file has
- * no complete snapshot; fatal when the file cannot be read. */
+/* Read the last complete snapshot of <base>.h5 into p (p is reset and refilled: the PF_RESTART
+ * fields from the snapshot, the others 0; masses are left for the caller to set from the
+ * materials). Returns 0 on success, -1 when the file has no complete snapshot; fatal when the
+ * file cannot be read. */
 int io_read_last_snapshot(const char *base, particles *p, double *time, long *step);
-/* The same, also filling cs with the snapshot's contact history (empty when it has none) and,
- * when the snapshot has them, p->f and p->torque with its forces (cs->forces_read = 1): the
- * restarted run then continues without evaluating the contacts a second time at that step. */
+/* The same, also filling cs with the snapshot's contact history (empty when it has none);
+ * cs->forces_read = 1 when the snapshot had p->f and p->torque (restart fields): the restarted
+ * run then continues without evaluating the contacts a second time at that step. */
 int io_read_last_snapshot_contacts(const char *base, particles *p, double *time, long *step,
                                    contact_state *cs);
 

@@ -262,23 +262,25 @@ static void xml_escape(FILE *f, const char *s)
     }
 }
 
-static void xdmf_item(FILE *f, const particle_writer *w, const char *group, const char *dset,
-                      int64_t n, int vec, const char *number_type, int precision)
+static void xdmf_item(FILE *f, const particle_writer *w, const char *group, const particle_field *pf,
+                      int64_t n)
 {
-    fprintf(f, "     <DataItem Format=\"HDF\" NumberType=\"%s\" Precision=\"%d\" "
-               "Dimensions=\"%" PRId64 "%s\">",
-            number_type, precision, n, vec ? " 3" : "");
+    static const char *const number_type[] = {[PF_DOUBLE] = "Float", [PF_INT] = "Int", [PF_INT64] = "Int"};
+    fprintf(f, "     <DataItem Format=\"HDF\" NumberType=\"%s\" Precision=\"%zu\" "
+               "Dimensions=\"%" PRId64,
+            number_type[pf->scalar], pf->element_size / (size_t)pf->components, n);
+    if (pf->components > 1) fprintf(f, " %d", pf->components);
+    fputs("\">", f);
     xml_escape(f, w->h5_name);
-    fprintf(f, ":/snapshots/%s/%s</DataItem>\n", group, dset);
+    fprintf(f, ":/snapshots/%s/%s</DataItem>\n", group, pf->dataset);
 }
 
 static void xdmf_attribute(FILE *f, const particle_writer *w, const char *group,
-                           const char *name, int64_t n, int vec, const char *number_type,
-                           int precision)
+                           const particle_field *pf, int64_t n)
 {
-    fprintf(f, "    <Attribute Name=\"%s\" AttributeType=\"%s\" Center=\"Node\">\n", name,
-            vec ? "Vector" : "Scalar");
-    xdmf_item(f, w, group, name, n, vec, number_type, precision);
+    fprintf(f, "    <Attribute Name=\"%s\" AttributeType=\"%s\" Center=\"Node\">\n", pf->dataset,
+            pf->components == 3 ? "Vector" : "Scalar");
+    xdmf_item(f, w, group, pf, n);
     fputs("    </Attribute>\n", f);
 }
 
@@ -306,14 +308,11 @@ static void write_xdmf(const particle_writer *w)
                    "\" NodesPerElement=\"1\"/>\n",
                 s->n);
         fputs("    <Geometry GeometryType=\"XYZ\">\n", f);
-        xdmf_item(f, w, group, "position", s->n, 1, "Float", 8);
+        xdmf_item(f, w, group, &particle_fields[PF_FIELD_x], s->n);
         fputs("    </Geometry>\n", f);
-        xdmf_attribute(f, w, group, "velocity", s->n, 1, "Float", 8);
-        xdmf_attribute(f, w, group, "omega", s->n, 1, "Float", 8);
-        xdmf_attribute(f, w, group, "force", s->n, 1, "Float", 8);
-        xdmf_attribute(f, w, group, "radius", s->n, 0, "Float", 8);
-        xdmf_attribute(f, w, group, "id", s->n, 0, "Int", 8);
-        xdmf_attribute(f, w, group, "type", s->n, 0, "Int", 4);
+        for (int k = 0; k < PARTICLE_FIELD_COUNT; k++)
+            if (k != PF_FIELD_x && (particle_fields[k].flags & PF_WRITE))
+                xdmf_attribute(f, w, group, &particle_fields[k], s->n);
         fputs("   </Grid>\n", f);
     }
     fputs("  </Grid>\n </Domain>\n</Xdmf>\n", f);
@@ -388,19 +387,31 @@ particle_writer *io_open_writer(const char *base, int append)
     return w;
 }
 
-static void write_dataset(hid_t group, const char *name, hid_t file_type, hid_t mem_type,
-                          const void *data, int64_t n, int vec, const char *units,
-                          const char *path)
+/* HDF5 types of a field's scalar: in the file (fixed, little endian) and in memory. */
+static hid_t file_type_of(const particle_field *pf)
 {
-    hsize_t dims[2] = {(hsize_t)n, 3};
-    hid_t space = chk(H5Screate_simple(vec ? 2 : 1, dims, NULL), path, "cannot create dataspace");
-    hid_t dset = chk(H5Dcreate2(group, name, file_type, space, H5P_DEFAULT, H5P_DEFAULT,
+    return pf->scalar == PF_DOUBLE ? H5T_IEEE_F64LE : pf->scalar == PF_INT ? H5T_STD_I32LE : H5T_STD_I64LE;
+}
+
+static hid_t memory_type_of(const particle_field *pf)
+{
+    return pf->scalar == PF_DOUBLE ? H5T_NATIVE_DOUBLE : pf->scalar == PF_INT ? H5T_NATIVE_INT : H5T_NATIVE_INT64;
+}
+
+/* One field of n particles: n values, or n x components; its unit as the `units` attribute. */
+static void write_field(hid_t group, const particle_field *pf, const particles *p, int64_t n,
+                        const char *path)
+{
+    hsize_t dims[2] = {(hsize_t)n, (hsize_t)pf->components};
+    hid_t space = chk(H5Screate_simple(pf->components > 1 ? 2 : 1, dims, NULL), path,
+                      "cannot create dataspace");
+    hid_t dset = chk(H5Dcreate2(group, pf->dataset, file_type_of(pf), space, H5P_DEFAULT, H5P_DEFAULT,
                                 H5P_DEFAULT),
                      path, "cannot create dataset");
     if (n > 0)
-        chk(H5Dwrite(dset, mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), path,
-            "cannot write dataset");
-    if (units) write_string_attr(dset, "units", units, path);
+        chk(H5Dwrite(dset, memory_type_of(pf), H5S_ALL, H5S_ALL, H5P_DEFAULT, particle_field_data(p, pf)),
+            path, "cannot write dataset");
+    write_string_attr(dset, "units", pf->unit, path);
     H5Dclose(dset);
     H5Sclose(space);
 }
@@ -464,14 +475,8 @@ void io_write_snapshot_contacts(particle_writer *w, const particles *p, double t
                   "cannot create snapshot group");
 
     const int64_t n = p->n;
-    write_dataset(g, "position", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, p->x, n, 1, "m", path);
-    write_dataset(g, "velocity", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, p->v, n, 1, "m/s", path);
-    write_dataset(g, "omega", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, p->omega, n, 1, "rad/s", path);
-    write_dataset(g, "force", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, p->f, n, 1, "N", path);
-    write_dataset(g, "torque", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, p->torque, n, 1, "N m", path);
-    write_dataset(g, "radius", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, p->radius, n, 0, "m", path);
-    write_dataset(g, "id", H5T_STD_I64LE, H5T_NATIVE_INT64, p->id, n, 0, NULL, path);
-    write_dataset(g, "type", H5T_STD_I32LE, H5T_NATIVE_INT, p->type, n, 0, NULL, path);
+    for (int k = 0; k < PARTICLE_FIELD_COUNT; k++)
+        if (particle_fields[k].flags & (PF_WRITE | PF_RESTART)) write_field(g, &particle_fields[k], p, n, path);
     if (cs && cs->history_size > 0) write_contacts(g, cs, path);
 
     const long long step_ll = step;
@@ -509,22 +514,53 @@ void io_close_writer(particle_writer *w)
 
 /* ---------------------------------------------------------------- reader */
 
-static void read_dataset(hid_t group, const char *name, hid_t mem_type, void *data, int64_t n,
-                         int vec, const char *path)
+/* Read one field of n particles; a field the snapshot does not have is set to 0 (returns 0). */
+static int read_field(hid_t group, const particle_field *pf, particles *p, int64_t n, const char *path)
 {
-    hid_t dset = chk(H5Dopen2(group, name, H5P_DEFAULT), path, "cannot open dataset");
+    void *data = particle_field_data(p, pf);
+    if (!chk(H5Lexists(group, pf->dataset, H5P_DEFAULT), path, "cannot query dataset")) {
+        if (n > 0) memset(data, 0, (size_t)n * pf->element_size);
+        return 0;
+    }
+    hid_t dset = chk(H5Dopen2(group, pf->dataset, H5P_DEFAULT), path, "cannot open dataset");
     hid_t space = chk(H5Dget_space(dset), path, "cannot get dataset dataspace");
+    const int vec = pf->components > 1;
     int rank = chk(H5Sget_simple_extent_ndims(space), path, "cannot get dataset rank");
     hsize_t dims[2] = {0, 0};
     if (rank == (vec ? 2 : 1)) H5Sget_simple_extent_dims(space, dims, NULL);
-    if (rank != (vec ? 2 : 1) || dims[0] != (hsize_t)n || (vec && dims[1] != 3))
-        dem_fatal("HDF5 file '%s': dataset '%s' has the wrong shape (expected %" PRId64 "%s)",
-                  path, name, n, vec ? " x 3" : "");
+    if (rank != (vec ? 2 : 1) || dims[0] != (hsize_t)n || (vec && dims[1] != (hsize_t)pf->components)) {
+        char expected[64];
+        if (vec) snprintf(expected, sizeof expected, "%" PRId64 " x %d", n, pf->components);
+        else snprintf(expected, sizeof expected, "%" PRId64, n);
+        dem_fatal("HDF5 file '%s': dataset '%s' has the wrong shape (expected %s)", path, pf->dataset,
+                  expected);
+    }
     if (n > 0)
-        chk(H5Dread(dset, mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), path,
+        chk(H5Dread(dset, memory_type_of(pf), H5S_ALL, H5S_ALL, H5P_DEFAULT, data), path,
             "cannot read dataset");
     H5Sclose(space);
     H5Dclose(dset);
+    return 1;
+}
+
+/* The restart fields of n particles from snapshot group g, the others 0. A restart field the
+ * snapshot lacks (written before the field was kept, as torque before the contact history was)
+ * is 0 too, with a warning; found[k] says which were there. */
+static void read_restart_fields(hid_t g, particles *p, int64_t n, const char *group, const char *path,
+                                int found[PARTICLE_FIELD_COUNT])
+{
+    for (int k = 0; k < PARTICLE_FIELD_COUNT; k++) {
+        const particle_field *pf = &particle_fields[k];
+        found[k] = 0;
+        if (pf->flags & PF_RESTART) {
+            found[k] = read_field(g, pf, p, n, path);
+            if (!found[k])
+                dem_warning("HDF5 file '%s': %s has no dataset '%s' (an older file?): it starts at 0", path,
+                            group, pf->dataset);
+        } else if (n > 0) {
+            memset(particle_field_data(p, pf), 0, (size_t)n * pf->element_size);
+        }
+    }
 }
 
 /* Rows of a 2-D dataset with `cols` columns (fatal on another shape); data malloc'd. */
@@ -622,24 +658,11 @@ int io_read_snapshot_at(const char *base, double at_time, double tolerance, part
     const int n = (int)last.n;
     particles_reserve(p, n);
     p->n = n;
-    read_dataset(g, "position", H5T_NATIVE_DOUBLE, p->x, n, 1, path);
-    read_dataset(g, "velocity", H5T_NATIVE_DOUBLE, p->v, n, 1, path);
-    read_dataset(g, "omega", H5T_NATIVE_DOUBLE, p->omega, n, 1, path);
-    read_dataset(g, "radius", H5T_NATIVE_DOUBLE, p->radius, n, 0, path);
-    read_dataset(g, "id", H5T_NATIVE_INT64, p->id, n, 0, path);
-    read_dataset(g, "type", H5T_NATIVE_INT, p->type, n, 0, path);
-    if (n > 0) {
-        memset(p->f, 0, (size_t)n * sizeof *p->f);
-        memset(p->torque, 0, (size_t)n * sizeof *p->torque);
-        memset(p->f_ext, 0, (size_t)n * sizeof *p->f_ext);
-    }
+    int found[PARTICLE_FIELD_COUNT];
+    read_restart_fields(g, p, n, name, path, found);
     if (cs) {
         read_contacts(g, cs, path);
-        if (chk(H5Lexists(g, "torque", H5P_DEFAULT), path, "cannot query torque dataset")) {
-            read_dataset(g, "force", H5T_NATIVE_DOUBLE, p->f, n, 1, path);
-            read_dataset(g, "torque", H5T_NATIVE_DOUBLE, p->torque, n, 1, path);
-            cs->forces_read = 1;
-        }
+        cs->forces_read = found[PF_FIELD_f] && found[PF_FIELD_torque];
     }
     H5Gclose(g);
     chk(H5Fclose(file), path, "cannot close file");

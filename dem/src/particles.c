@@ -5,6 +5,12 @@
 #include "error.h"
 #include "particles.h"
 
+#define PF_DESCRIPTOR(member, element, unit, dataset, flags)                                     \
+    {#member, dataset, unit, offsetof(particles, member), sizeof(PF_CTYPE_##element),            \
+     PF_COMPONENTS_##element, PF_SCALAR_##element, flags},
+const particle_field particle_fields[PARTICLE_FIELD_COUNT] = {PARTICLE_FIELDS(PF_DESCRIPTOR)};
+#undef PF_DESCRIPTOR
+
 void particles_init(particles *p)
 {
     memset(p, 0, sizeof *p);
@@ -12,21 +18,19 @@ void particles_init(particles *p)
 
 void particles_free(particles *p)
 {
-    free(p->x); free(p->v); free(p->omega); free(p->f); free(p->torque); free(p->f_ext);
-    free(p->radius); free(p->mass); free(p->inv_mass); free(p->inv_inertia);
-    free(p->type); free(p->id);
+#define PF_FREE(member, element, unit, dataset, flags) free(p->member);
+    PARTICLE_FIELDS(PF_FREE)
+#undef PF_FREE
     particles_init(p);
 }
-
-#define GROW(field, count) p->field = dem_realloc(p->field, (size_t)(count) * sizeof *p->field)
 
 void particles_reserve(particles *p, int capacity)
 {
     if (capacity <= p->capacity) return;
-    GROW(x, capacity); GROW(v, capacity); GROW(omega, capacity); GROW(f, capacity);
-    GROW(torque, capacity); GROW(f_ext, capacity);
-    GROW(radius, capacity); GROW(mass, capacity); GROW(inv_mass, capacity);
-    GROW(inv_inertia, capacity); GROW(type, capacity); GROW(id, capacity);
+#define PF_GROW(member, element, unit, dataset, flags)                                           \
+    p->member = dem_realloc(p->member, (size_t)capacity * sizeof *p->member);
+    PARTICLE_FIELDS(PF_GROW)
+#undef PF_GROW
     p->capacity = capacity;
 }
 
@@ -39,18 +43,24 @@ void particles_set_mass(particles *p, int i, double density)
     p->inv_inertia[i] = 1.0 / (0.4 * m * r * r);
 }
 
-int particles_add(particles *p, const double x[3], const double v[3], double radius,
-                  double density, int type, int64_t id)
+/* A new particle at index n (grown if needed), all fields 0. */
+static int append_zeroed(particles *p)
 {
     if (p->n == p->capacity) particles_reserve(p, p->capacity ? 2 * p->capacity : 1024);
     const int i = p->n++;
+#define PF_ZERO(member, element, unit, dataset, flags) memset(&p->member[i], 0, sizeof *p->member);
+    PARTICLE_FIELDS(PF_ZERO)
+#undef PF_ZERO
+    return i;
+}
+
+int particles_add(particles *p, const double x[3], const double v[3], double radius,
+                  double density, int type, int64_t id)
+{
+    const int i = append_zeroed(p);
     for (int d = 0; d < 3; d++) {
         p->x[i][d] = x[d];
         p->v[i][d] = v[d];
-        p->omega[i][d] = 0.0;
-        p->f[i][d] = 0.0;
-        p->torque[i][d] = 0.0;
-        p->f_ext[i][d] = 0.0;
     }
     p->radius[i] = radius;
     p->type[i] = type;
@@ -59,44 +69,64 @@ int particles_add(particles *p, const double x[3], const double v[3], double rad
     return i;
 }
 
-/* Gather one array through `order` using a scratch buffer. */
-static void permute_array(void *data, size_t elem, int n, const int *order, void *scratch)
-{
-    char *src = data, *dst = scratch;
-    for (int k = 0; k < n; k++) memcpy(dst + (size_t)k * elem, src + (size_t)order[k] * elem, elem);
-    memcpy(data, scratch, (size_t)n * elem);
-}
-
-void particles_copy(particles *p, int src, int dst)
-{
-    memcpy(p->x[dst], p->x[src], sizeof(vec3));
-    memcpy(p->v[dst], p->v[src], sizeof(vec3));
-    memcpy(p->omega[dst], p->omega[src], sizeof(vec3));
-    memcpy(p->f[dst], p->f[src], sizeof(vec3));
-    memcpy(p->torque[dst], p->torque[src], sizeof(vec3));
-    memcpy(p->f_ext[dst], p->f_ext[src], sizeof(vec3));
-    p->radius[dst] = p->radius[src];
-    p->mass[dst] = p->mass[src];
-    p->inv_mass[dst] = p->inv_mass[src];
-    p->inv_inertia[dst] = p->inv_inertia[src];
-    p->type[dst] = p->type[src];
-    p->id[dst] = p->id[src];
-}
-
+/* Each field gathered through `order` into scratch and copied back; the element size is a
+ * constant in each expansion, so the copies compile to moves. */
 void particles_permute(particles *p, const int *order)
 {
-    void *scratch = dem_malloc((size_t)p->n * sizeof(vec3));
-    permute_array(p->x, sizeof(vec3), p->n, order, scratch);
-    permute_array(p->v, sizeof(vec3), p->n, order, scratch);
-    permute_array(p->omega, sizeof(vec3), p->n, order, scratch);
-    permute_array(p->f, sizeof(vec3), p->n, order, scratch);
-    permute_array(p->torque, sizeof(vec3), p->n, order, scratch);
-    permute_array(p->f_ext, sizeof(vec3), p->n, order, scratch);
-    permute_array(p->radius, sizeof(double), p->n, order, scratch);
-    permute_array(p->mass, sizeof(double), p->n, order, scratch);
-    permute_array(p->inv_mass, sizeof(double), p->n, order, scratch);
-    permute_array(p->inv_inertia, sizeof(double), p->n, order, scratch);
-    permute_array(p->type, sizeof(int), p->n, order, scratch);
-    permute_array(p->id, sizeof(int64_t), p->n, order, scratch);
+    const int n = p->n;
+    size_t largest = 1;
+    for (int k = 0; k < PARTICLE_FIELD_COUNT; k++)
+        if (particle_fields[k].element_size > largest) largest = particle_fields[k].element_size;
+    char *scratch = dem_malloc((size_t)(n ? n : 1) * largest);
+#define PF_PERMUTE(member, element, unit, dataset, flags)                                        \
+    {                                                                                            \
+        const size_t elem = sizeof *p->member;                                                   \
+        for (int k = 0; k < n; k++) memcpy(scratch + k * elem, &p->member[order[k]], elem);      \
+        memcpy(p->member, scratch, (size_t)n * elem);                                            \
+    }
+    PARTICLE_FIELDS(PF_PERMUTE)
+#undef PF_PERMUTE
     free(scratch);
+}
+
+void particles_copy(particles *p, int from, int to)
+{
+    if (from == to) return;
+#define PF_COPY(member, element, unit, dataset, flags)                                           \
+    memcpy(&p->member[to], &p->member[from], sizeof *p->member);
+    PARTICLE_FIELDS(PF_COPY)
+#undef PF_COPY
+}
+
+size_t particles_pack_size(void)
+{
+    size_t bytes = 0;
+    for (int k = 0; k < PARTICLE_FIELD_COUNT; k++)
+        if (particle_fields[k].flags & PF_MIGRATE) bytes += particle_fields[k].element_size;
+    return bytes;
+}
+
+size_t particles_pack(const particles *p, int i, void *buf)
+{
+    char *out = buf;
+    for (int k = 0; k < PARTICLE_FIELD_COUNT; k++) {
+        const particle_field *f = &particle_fields[k];
+        if (!(f->flags & PF_MIGRATE)) continue;
+        memcpy(out, (const char *)particle_field_data(p, f) + (size_t)i * f->element_size, f->element_size);
+        out += f->element_size;
+    }
+    return (size_t)(out - (char *)buf);
+}
+
+int particles_unpack(particles *p, const void *buf)
+{
+    const int i = append_zeroed(p);
+    const char *in = buf;
+    for (int k = 0; k < PARTICLE_FIELD_COUNT; k++) {
+        const particle_field *f = &particle_fields[k];
+        if (!(f->flags & PF_MIGRATE)) continue;
+        memcpy((char *)particle_field_data(p, f) + (size_t)i * f->element_size, in, f->element_size);
+        in += f->element_size;
+    }
+    return i;
 }

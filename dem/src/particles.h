@@ -1,40 +1,139 @@
 /* Particle storage: a structure of arrays, one array per quantity. Vector quantities are
- * stored as double[3] per particle, so that a neighbour's position is one cache line. */
+ * stored as double[3] per particle, so that a neighbour's position is one cache line.
+ *
+ * Every per-particle quantity is named once, in PARTICLE_FIELDS below; the struct's members,
+ * allocation, zeroing of a new particle, sorting, copying, packing for another rank, the HDF5
+ * snapshot, the XDMF index and the restart all come from that list. A new field is one line. */
 #ifndef DEM_PARTICLES_H
 #define DEM_PARTICLES_H
 
+#include <stddef.h>
 #include <stdint.h>
+#include <string.h>
 
 typedef double vec3[3];
+
+/* What happens to a field besides living in memory:
+ *   PF_WRITE    in every HDF5 snapshot and in the XDMF index (ParaView shows it)
+ *   PF_RESTART  in every HDF5 snapshot and read back on restart: needed to continue exactly
+ *   PF_MIGRATE  moved with the particle when it changes rank (else the arriving particle has 0) */
+enum { PF_WRITE = 1, PF_RESTART = 2, PF_MIGRATE = 4 };
+
+/* X(member, element, unit, dataset, flags)
+ *   member   the struct's member: an array with one element per particle
+ *   element  vec3, double, int or int64 (the components and the HDF5 type follow from it)
+ *   unit     SI unit ("1": a pure number or an index), the dataset's `units` attribute
+ *   dataset  the name in the snapshot and the XDMF index (kept from the first file format)
+ * Why the flags are as they are:
+ *   - f and torque are a restart field because the snapshot's forces were computed with the
+ *     step's contact history; evaluating them again on restart would add the last tangential
+ *     increment twice (restart.c). They migrate: the next step's first half kick uses them.
+ *   - mass and the inverses follow from radius and the material's density: recomputed on
+ *     restart (restart_read), moved along on migration (cheaper than looking up the material).
+ *   - The coupling's fields (coupling/src/coupling.c) are no restart fields: beta, u_fluid and
+ *     f_fluid are evaluated again from the fluid field at the start of every fluid step, before
+ *     any DEM step uses them, and a snapshot is written only between fluid steps. fluid_cell is
+ *     only where the search for the particle's cell starts (0 is as good a start as any), and
+ *     a cell number of one rank's mesh means nothing on another: it does not migrate. */
+#define PARTICLE_FIELDS(X)                                                                      \
+    X(x,           vec3,   "m",        "position",        PF_WRITE | PF_RESTART | PF_MIGRATE)    \
+    X(v,           vec3,   "m/s",      "velocity",        PF_WRITE | PF_RESTART | PF_MIGRATE)    \
+    X(omega,       vec3,   "rad/s",    "omega",           PF_WRITE | PF_RESTART | PF_MIGRATE)    \
+    /* total force and torque of this step */                                                  \
+    X(f,           vec3,   "N",        "force",           PF_WRITE | PF_RESTART | PF_MIGRATE)    \
+    X(torque,      vec3,   "N m",      "torque",          PF_RESTART | PF_MIGRATE)               \
+    /* external force held between exchanges (the fluid force in a coupled run) */             \
+    X(f_ext,       vec3,   "N",        "external_force",  PF_MIGRATE)                            \
+    X(radius,      double, "m",        "radius",          PF_WRITE | PF_RESTART | PF_MIGRATE)    \
+    X(mass,        double, "kg",       "mass",            PF_MIGRATE)                            \
+    X(inv_mass,    double, "1/kg",     "inverse_mass",    PF_MIGRATE)                            \
+    /* 1 / (2/5 m r^2) */                                                                      \
+    X(inv_inertia, double, "1/(kg m^2)", "inverse_inertia", PF_MIGRATE)                          \
+    /* material index */                                                                       \
+    X(type,        int,    "1",        "type",            PF_WRITE | PF_RESTART | PF_MIGRATE)    \
+    /* global id, stable across sorting, restarts and ranks */                                 \
+    X(id,          int64,  "1",        "id",              PF_WRITE | PF_RESTART | PF_MIGRATE)    \
+    /* coupling: the fluid cell of the centre at the last exchange (-1: outside the mesh) */   \
+    X(fluid_cell,  int,    "1",        "fluid_cell",      0)                                     \
+    /* coupling: the fluid force is beta (u_fluid - v) + f_fluid, beta and u_fluid frozen at    \
+     * the exchange (beta 0 when explicit), f_fluid the part that does not depend on v */      \
+    X(beta,        double, "kg/s",     "drag_coefficient", PF_MIGRATE)                           \
+    X(u_fluid,     vec3,   "m/s",      "fluid_velocity",  PF_MIGRATE)                            \
+    X(f_fluid,     vec3,   "N",        "fluid_force_fixed", PF_MIGRATE)
+
+/* The element types the list may use: C type, components, scalar kind. */
+#define PF_CTYPE_vec3 vec3
+#define PF_CTYPE_double double
+#define PF_CTYPE_int int
+#define PF_CTYPE_int64 int64_t
+#define PF_COMPONENTS_vec3 3
+#define PF_COMPONENTS_double 1
+#define PF_COMPONENTS_int 1
+#define PF_COMPONENTS_int64 1
+#define PF_SCALAR_vec3 PF_DOUBLE
+#define PF_SCALAR_double PF_DOUBLE
+#define PF_SCALAR_int PF_INT
+#define PF_SCALAR_int64 PF_INT64
+
+enum particle_scalar { PF_DOUBLE, PF_INT, PF_INT64 };
 
 typedef struct particles {
     int n;                 /* particles in use */
     int capacity;
-    vec3 *x;               /* position [m] */
-    vec3 *v;               /* velocity [m/s] */
-    vec3 *omega;           /* angular velocity [rad/s] */
-    vec3 *f;               /* total force of this step [N] */
-    vec3 *torque;          /* total torque of this step [N m] */
-    vec3 *f_ext;           /* external force held between exchanges (e.g. fluid drag) [N] */
-    double *radius;        /* [m] */
-    double *mass;          /* [kg] */
-    double *inv_mass;      /* [1/kg] */
-    double *inv_inertia;   /* 1 / (2/5 m r^2) [1/(kg m^2)] */
-    int *type;             /* material index */
-    int64_t *id;           /* global id, stable across sorting and restarts */
+#define PF_MEMBER(member, element, unit, dataset, flags) PF_CTYPE_##element *member;
+    PARTICLE_FIELDS(PF_MEMBER)
+#undef PF_MEMBER
 } particles;
+
+/* Index of each field in particle_fields[]: PF_FIELD_x, PF_FIELD_v, ... */
+enum particle_field_index {
+#define PF_INDEX(member, element, unit, dataset, flags) PF_FIELD_##member,
+    PARTICLE_FIELDS(PF_INDEX)
+#undef PF_INDEX
+    PARTICLE_FIELD_COUNT
+};
+
+/* One field, for code that treats them all alike (I/O, packing). */
+typedef struct particle_field {
+    const char *member;          /* the C name */
+    const char *dataset;         /* name in the snapshot and the XDMF index */
+    const char *unit;
+    size_t offset;               /* offsetof(particles, member): where the array pointer is */
+    size_t element_size;         /* bytes per particle */
+    int components;
+    enum particle_scalar scalar; /* double, int or int64: gives the HDF5 type */
+    unsigned flags;              /* PF_WRITE, PF_RESTART, PF_MIGRATE */
+} particle_field;
+
+extern const particle_field particle_fields[PARTICLE_FIELD_COUNT];
+
+/* The array of field f in p (the member at f->offset). Read as bytes: the member is a typed
+ * pointer, and reading it through a void * lvalue would break the aliasing rules. */
+static inline void *particle_field_data(const particles *p, const particle_field *f)
+{
+    void *data;
+    memcpy(&data, (const char *)p + f->offset, sizeof data);
+    return data;
+}
 
 void particles_init(particles *p);
 void particles_free(particles *p);
 void particles_reserve(particles *p, int capacity);
-/* Append one particle at rest; returns its index. density in kg/m^3. */
+/* Append one particle at rest, every other field 0; returns its index. density in kg/m^3. */
 int particles_add(particles *p, const double x[3], const double v[3], double radius,
                   double density, int type, int64_t id);
 /* Recompute mass, inverse mass and inverse inertia from radius and a per-type density. */
 void particles_set_mass(particles *p, int i, double density);
-/* Copy every quantity of particle src to index dst (within the capacity). */
-void particles_copy(particles *p, int src, int dst);
 /* Reorder all arrays so that new index k holds old index order[k]. */
 void particles_permute(particles *p, const int *order);
+/* Every field of particle `from` copied onto particle `to` (both within the capacity; the
+ * periodic images beyond n are made this way). */
+void particles_copy(particles *p, int from, int to);
+/* Bytes of one particle's PF_MIGRATE fields, as particles_pack writes them. */
+size_t particles_pack_size(void);
+/* Particle i's PF_MIGRATE fields into buf (particles_pack_size() bytes); returns the bytes. */
+size_t particles_pack(const particles *p, int i, void *buf);
+/* Append a particle from particles_pack's bytes, its other fields 0; returns its index. */
+int particles_unpack(particles *p, const void *buf);
 
 #endif

@@ -62,13 +62,14 @@ static void compare(const particles *r, int n, int k, const char *what)
         particles_free(&e);
         return;
     }
-    int bad_x = 0, bad_v = 0, bad_w = 0, bad_r = 0, bad_id = 0, bad_t = 0, bad_zero = 0;
+    int bad_x = 0, bad_v = 0, bad_w = 0, bad_f = 0, bad_r = 0, bad_id = 0, bad_t = 0, bad_zero = 0;
     for (int i = 0; i < n; i++) {
         for (int d = 0; d < 3; d++) {
             bad_x += r->x[i][d] != e.x[i][d];
             bad_v += r->v[i][d] != e.v[i][d];
             bad_w += r->omega[i][d] != e.omega[i][d];
-            bad_zero += r->f[i][d] != 0.0 || r->torque[i][d] != 0.0 || r->f_ext[i][d] != 0.0;
+            bad_f += r->f[i][d] != e.f[i][d] || r->torque[i][d] != e.torque[i][d];
+            bad_zero += r->f_ext[i][d] != 0.0;
         }
         bad_r += r->radius[i] != e.radius[i];
         bad_id += r->id[i] != e.id[i];
@@ -77,10 +78,11 @@ static void compare(const particles *r, int n, int k, const char *what)
     CHECK(!bad_x, "%s: %d position values differ", what, bad_x);
     CHECK(!bad_v, "%s: %d velocity values differ", what, bad_v);
     CHECK(!bad_w, "%s: %d omega values differ", what, bad_w);
+    CHECK(!bad_f, "%s: %d force/torque values differ", what, bad_f);
     CHECK(!bad_r, "%s: %d radii differ", what, bad_r);
     CHECK(!bad_id, "%s: %d ids differ", what, bad_id);
     CHECK(!bad_t, "%s: %d types differ", what, bad_t);
-    CHECK(!bad_zero, "%s: %d force/torque/f_ext values not reset to zero", what, bad_zero);
+    CHECK(!bad_zero, "%s: %d f_ext values not reset to zero", what, bad_zero);
     particles_free(&e);
 }
 

@@ -1,0 +1,419 @@
+/* The particle field table (dem/src/particles.h): every field the list names is allocated,
+ * zeroed for a new particle, sorted, copied, packed for another rank, written to the HDF5
+ * snapshot and read back on restart, bit for bit, as its flags say.
+ *
+ * The test walks the table, so a field added to PARTICLE_FIELDS (one line) is covered here
+ * without touching this file. What it cannot take from the table it derives on its own: the
+ * number of fields is counted from the struct's layout (every member after n and capacity is one
+ * field's array), so a member added to the struct by hand, outside the list, fails the test.
+ * Usage: test_fields [folder for temporary files] */
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include <hdf5.h>
+
+#include "error.h"
+#include "io.h"
+#include "particles.h"
+
+static int checks = 0, failures = 0;
+
+#define CHECK(cond, ...)                                                                       \
+    do {                                                                                       \
+        checks++;                                                                              \
+        if (!(cond)) {                                                                         \
+            failures++;                                                                        \
+            fprintf(stderr, "FAIL %s:%d: ", __FILE__, __LINE__);                               \
+            fprintf(stderr, __VA_ARGS__);                                                      \
+            fputc('\n', stderr);                                                               \
+        }                                                                                      \
+    } while (0)
+
+enum { MAX_ELEMENT = 64 };
+
+/* The element of field k for pattern number `seed`: distinct per field, seed and component,
+ * with bit patterns that a float round trip or a conversion would lose. */
+static void expected(int k, int seed, unsigned char out[MAX_ELEMENT])
+{
+    const particle_field *f = &particle_fields[k];
+    for (int c = 0; c < f->components; c++) {
+        if (f->scalar == PF_DOUBLE) {
+            const double v = (k + 1) / 3.0 + sin(0.7 * seed + c) * 1e-3 + seed * 1e-7;
+            memcpy(out + c * sizeof v, &v, sizeof v);
+        } else if (f->scalar == PF_INT) {
+            const int v = -(k + 1) * 100003 + 7 * seed + c;
+            memcpy(out + c * sizeof v, &v, sizeof v);
+        } else {
+            const int64_t v = ((int64_t)(k + 1) << 40) + 1000 * (int64_t)seed + c;
+            memcpy(out + c * sizeof v, &v, sizeof v);
+        }
+    }
+}
+
+static unsigned char *element(const particles *p, int k, int i)
+{
+    return (unsigned char *)particle_field_data(p, &particle_fields[k]) + (size_t)i * particle_fields[k].element_size;
+}
+
+static void fill(particles *p, int k, int i, int seed)
+{
+    unsigned char e[MAX_ELEMENT];
+    expected(k, seed, e);
+    memcpy(element(p, k, i), e, particle_fields[k].element_size);
+}
+
+static void fill_all(particles *p, int n)
+{
+    particles_reserve(p, n);
+    p->n = n;
+    for (int k = 0; k < PARTICLE_FIELD_COUNT; k++)
+        for (int i = 0; i < n; i++) fill(p, k, i, i);
+}
+
+static int holds(const particles *p, int k, int i, int seed)
+{
+    unsigned char e[MAX_ELEMENT];
+    expected(k, seed, e);
+    return memcmp(element(p, k, i), e, particle_fields[k].element_size) == 0;
+}
+
+static int is_zero(const particles *p, int k, int i)
+{
+    const unsigned char *b = element(p, k, i);
+    for (size_t q = 0; q < particle_fields[k].element_size; q++)
+        if (b[q]) return 0;
+    return 1;
+}
+
+/* 1. The table itself: one entry per member, sizes that agree with the types, unique names,
+ *    the dataset names of the first file format. */
+static void check_table(void)
+{
+    const size_t arrays = (sizeof(particles) - offsetof(particles, x)) / sizeof(void *);
+    CHECK(PARTICLE_FIELD_COUNT == (int)arrays, "the table has %d fields, the struct %zu arrays",
+          PARTICLE_FIELD_COUNT, arrays);
+    int seen[64] = {0};
+    for (int k = 0; k < PARTICLE_FIELD_COUNT; k++) {
+        const particle_field *f = &particle_fields[k];
+        const size_t slot = (f->offset - offsetof(particles, x)) / sizeof(void *);
+        CHECK(f->offset >= offsetof(particles, x) && slot < 64 && !seen[slot]++, "%s: offset %zu", f->member,
+              f->offset);
+        const size_t scalar = f->scalar == PF_DOUBLE ? sizeof(double) : f->scalar == PF_INT ? sizeof(int) : sizeof(int64_t);
+        CHECK(f->components >= 1 && f->element_size == scalar * (size_t)f->components && f->element_size <= MAX_ELEMENT,
+              "%s: %zu bytes for %d components", f->member, f->element_size, f->components);
+        CHECK(f->unit && f->unit[0], "%s: no unit", f->member);
+        for (int j = 0; j < k; j++) {
+            CHECK(strcmp(f->member, particle_fields[j].member) != 0, "member %s twice", f->member);
+            CHECK(strcmp(f->dataset, particle_fields[j].dataset) != 0, "dataset %s twice", f->dataset);
+        }
+    }
+    /* what the tests' and tutorials' post-processing read from every snapshot */
+    static const struct { int field; const char *dataset; unsigned flags; } kept[] = {
+        {PF_FIELD_x, "position", PF_WRITE | PF_RESTART}, {PF_FIELD_v, "velocity", PF_WRITE | PF_RESTART},
+        {PF_FIELD_omega, "omega", PF_WRITE | PF_RESTART}, {PF_FIELD_f, "force", PF_WRITE | PF_RESTART},
+        {PF_FIELD_torque, "torque", PF_RESTART}, {PF_FIELD_radius, "radius", PF_WRITE | PF_RESTART},
+        {PF_FIELD_id, "id", PF_WRITE | PF_RESTART}, {PF_FIELD_type, "type", PF_WRITE | PF_RESTART}};
+    for (size_t q = 0; q < sizeof kept / sizeof kept[0]; q++) {
+        const particle_field *f = &particle_fields[kept[q].field];
+        CHECK(strcmp(f->dataset, kept[q].dataset) == 0 && (f->flags & kept[q].flags) == kept[q].flags,
+              "%s: dataset '%s' flags %u, expected '%s' with %u", f->member, f->dataset, f->flags,
+              kept[q].dataset, kept[q].flags);
+    }
+}
+
+/* 2. Allocation: every field has room for the capacity, and growing keeps the contents. */
+static void check_allocation(void)
+{
+    particles p;
+    particles_init(&p);
+    fill_all(&p, 1000);
+    for (int k = 0; k < PARTICLE_FIELD_COUNT; k++)
+        CHECK(particle_field_data(&p, &particle_fields[k]) != NULL, "%s not allocated", particle_fields[k].member);
+    particles_reserve(&p, 5000);
+    CHECK(p.capacity == 5000, "capacity %d after reserve(5000)", p.capacity);
+    for (int k = 0; k < PARTICLE_FIELD_COUNT; k++) {
+        fill(&p, k, 4999, 4999);   /* the last element is writable (valgrind/ASan would see it) */
+        int bad = 0;
+        for (int i = 0; i < 1000; i++) bad += !holds(&p, k, i, i);
+        CHECK(!bad, "%s: %d values lost when growing", particle_fields[k].member, bad);
+    }
+    particles_free(&p);
+    for (int k = 0; k < PARTICLE_FIELD_COUNT; k++)
+        CHECK(particle_field_data(&p, &particle_fields[k]) == NULL, "%s not freed", particle_fields[k].member);
+}
+
+/* 3. particles_add: the fields it is given or derives are set, every other one is 0 (the
+ *    memory is dirtied first). */
+static void check_add(void)
+{
+    particles p;
+    particles_init(&p);
+    fill_all(&p, 8);
+    p.n = 5;
+    const double x[3] = {0.1, -0.2, 0.3}, v[3] = {1.5, 2.5, -3.5}, r = 1e-3, rho = 2500.0;
+    const int i = particles_add(&p, x, v, r, rho, 2, 77);
+    CHECK(i == 5 && p.n == 6, "particles_add gave index %d, n %d", i, p.n);
+    const double m = rho * 4.0 / 3.0 * M_PI * r * r * r;
+    CHECK(p.x[i][0] == x[0] && p.x[i][1] == x[1] && p.x[i][2] == x[2] && p.v[i][0] == v[0] &&
+              p.v[i][1] == v[1] && p.v[i][2] == v[2] && p.radius[i] == r && p.type[i] == 2 && p.id[i] == 77 &&
+              p.mass[i] == m && p.inv_mass[i] == 1.0 / m && p.inv_inertia[i] == 1.0 / (0.4 * m * r * r),
+          "particles_add: the given and derived values are not as given");
+    static const int set_by_add[] = {PF_FIELD_x, PF_FIELD_v, PF_FIELD_radius, PF_FIELD_type, PF_FIELD_id,
+                                     PF_FIELD_mass, PF_FIELD_inv_mass, PF_FIELD_inv_inertia};
+    for (int k = 0; k < PARTICLE_FIELD_COUNT; k++) {
+        int given = 0;
+        for (size_t q = 0; q < sizeof set_by_add / sizeof set_by_add[0]; q++) given |= set_by_add[q] == k;
+        if (!given) CHECK(is_zero(&p, k, i), "particles_add: %s not zeroed", particle_fields[k].member);
+        CHECK(holds(&p, k, 4, 4), "particles_add: %s of particle 4 changed", particle_fields[k].member);
+    }
+    /* growing from full */
+    particles q;
+    particles_init(&q);
+    for (int j = 0; j < 1500; j++) particles_add(&q, x, v, r, rho, 0, j);
+    CHECK(q.n == 1500 && q.id[0] == 0 && q.id[1499] == 1499, "1500 adds: n %d", q.n);
+    particles_free(&q);
+    particles_free(&p);
+}
+
+/* 4. Sorting: after particles_permute, new index j holds every field of old index order[j]. */
+static void check_permute(void)
+{
+    enum { N = 257 };
+    particles p;
+    particles_init(&p);
+    fill_all(&p, N);
+    int order[N];
+    for (int j = 0; j < N; j++) order[j] = j;
+    unsigned state = 12345;
+    for (int j = N - 1; j > 0; j--) {   /* Fisher-Yates with a fixed LCG */
+        state = 1103515245u * state + 12345u;
+        const int r = (int)((state >> 8) % (unsigned)(j + 1));
+        const int t = order[j];
+        order[j] = order[r];
+        order[r] = t;
+    }
+    particles_permute(&p, order);
+    for (int k = 0; k < PARTICLE_FIELD_COUNT; k++) {
+        int bad = 0;
+        for (int j = 0; j < N; j++) bad += !holds(&p, k, j, order[j]);
+        CHECK(!bad, "permute: %s wrong at %d of %d particles", particle_fields[k].member, bad, N);
+    }
+    particles_free(&p);
+}
+
+/* 5. Copying one particle onto another, and packing one for another rank: the PF_MIGRATE
+ *    fields travel, the others arrive as 0. */
+static void check_copy_and_pack(void)
+{
+    particles p, q;
+    particles_init(&p);
+    particles_init(&q);
+    fill_all(&p, 20);
+    particles_copy(&p, 3, 10);
+    for (int k = 0; k < PARTICLE_FIELD_COUNT; k++)
+        CHECK(holds(&p, k, 10, 3) && holds(&p, k, 3, 3) && holds(&p, k, 11, 11), "copy: %s",
+              particle_fields[k].member);
+
+    size_t migrating = 0;
+    for (int k = 0; k < PARTICLE_FIELD_COUNT; k++)
+        if (particle_fields[k].flags & PF_MIGRATE) migrating += particle_fields[k].element_size;
+    CHECK(particles_pack_size() == migrating, "pack size %zu, expected %zu", particles_pack_size(), migrating);
+    unsigned char *buf = malloc(particles_pack_size() + 1);
+    CHECK(particles_pack(&p, 7, buf) == migrating, "particles_pack wrote another size");
+    fill_all(&q, 4);
+    const int i = particles_unpack(&q, buf);
+    CHECK(i == 4 && q.n == 5, "unpack gave index %d, n %d", i, q.n);
+    for (int k = 0; k < PARTICLE_FIELD_COUNT; k++) {
+        if (particle_fields[k].flags & PF_MIGRATE)
+            CHECK(holds(&q, k, i, 7), "unpack: %s did not travel", particle_fields[k].member);
+        else
+            CHECK(is_zero(&q, k, i), "unpack: %s (not migrating) is not 0", particle_fields[k].member);
+    }
+    free(buf);
+    particles_free(&p);
+    particles_free(&q);
+}
+
+/* Raw contents of dataset `name` of /snapshots/000000 in the field's memory type; NULL if absent.
+ * *units gets its units attribute (malloc'd, or NULL). */
+static void *read_raw(const char *h5, const particle_field *f, int n, char **units, int *shape_ok)
+{
+    *units = NULL;
+    *shape_ok = 0;
+    hid_t file = H5Fopen(h5, H5F_ACC_RDONLY, H5P_DEFAULT);
+    if (file < 0) return NULL;
+    char path[256];
+    snprintf(path, sizeof path, "/snapshots/000000/%s", f->dataset);
+    void *data = NULL;
+    if (H5Lexists(file, path, H5P_DEFAULT) > 0) {
+        hid_t d = H5Dopen2(file, path, H5P_DEFAULT);
+        hid_t space = H5Dget_space(d);
+        hsize_t dims[2] = {0, 0};
+        const int rank = H5Sget_simple_extent_ndims(space);
+        H5Sget_simple_extent_dims(space, dims, NULL);
+        *shape_ok = rank == (f->components > 1 ? 2 : 1) && dims[0] == (hsize_t)n &&
+                    (f->components == 1 || dims[1] == (hsize_t)f->components);
+        const hid_t mem = f->scalar == PF_DOUBLE ? H5T_NATIVE_DOUBLE : f->scalar == PF_INT ? H5T_NATIVE_INT : H5T_NATIVE_INT64;
+        data = calloc((size_t)n, f->element_size);
+        if (*shape_ok) H5Dread(d, mem, H5S_ALL, H5S_ALL, H5P_DEFAULT, data);
+        if (H5Aexists(d, "units") > 0) {
+            hid_t a = H5Aopen(d, "units", H5P_DEFAULT);
+            hid_t t = H5Aget_type(a);
+            const size_t len = H5Tget_size(t);
+            *units = calloc(len + 1, 1);
+            H5Aread(a, t, *units);
+            H5Tclose(t);
+            H5Aclose(a);
+        }
+        H5Sclose(space);
+        H5Dclose(d);
+    }
+    H5Fclose(file);
+    return data;
+}
+
+static char *slurp(const char *path)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) return NULL;
+    fseek(f, 0, SEEK_END);
+    const long len = ftell(f);
+    fseek(f, 0, SEEK_SET);
+    char *s = malloc((size_t)len + 1);
+    const size_t got = fread(s, 1, (size_t)len, f);
+    s[got] = '\0';
+    fclose(f);
+    return s;
+}
+
+static int warnings_about_torque = 0;
+
+static void count_warnings(enum dem_log_level level, const char *message)
+{
+    if (level == DEM_LOG_WARNING && strstr(message, "'torque'")) warnings_about_torque++;
+}
+
+/* 6. The snapshot holds exactly the PF_WRITE and PF_RESTART fields, bit for bit, each with its
+ *    unit; the XDMF index lists the PF_WRITE ones; the restart reader gives back the
+ *    PF_RESTART fields bit for bit and 0 for the others. A snapshot without a restart field (an
+ *    older file) reads with that field 0, a warning, and no forces kept for the restart. */
+static void check_snapshot(const char *dir)
+{
+    enum { N = 123 };
+    char base[4200], h5[4300], xdmf[4300];
+    snprintf(base, sizeof base, "%s/particles", dir);
+    snprintf(h5, sizeof h5, "%s.h5", base);
+    snprintf(xdmf, sizeof xdmf, "%s.xdmf", base);
+    particles p, r;
+    particles_init(&p);
+    particles_init(&r);
+    fill_all(&p, N);
+    particle_writer *w = io_open_writer(base, 0);
+    io_write_snapshot(w, &p, 0.25, 9);
+    io_close_writer(w);
+
+    for (int k = 0; k < PARTICLE_FIELD_COUNT; k++) {
+        const particle_field *f = &particle_fields[k];
+        char *units;
+        int shape_ok;
+        void *raw = read_raw(h5, f, N, &units, &shape_ok);
+        const int stored = (f->flags & (PF_WRITE | PF_RESTART)) != 0;
+        CHECK((raw != NULL) == stored, "snapshot: dataset '%s' %s", f->dataset, stored ? "missing" : "written");
+        if (raw) {
+            CHECK(shape_ok, "snapshot: dataset '%s' has the wrong shape", f->dataset);
+            CHECK(memcmp(raw, particle_field_data(&p, f), (size_t)N * f->element_size) == 0,
+                  "snapshot: dataset '%s' differs from the particles' %s", f->dataset, f->member);
+            CHECK(units && strcmp(units, f->unit) == 0, "snapshot: dataset '%s' units '%s', expected '%s'",
+                  f->dataset, units ? units : "(none)", f->unit);
+        }
+        free(raw);
+        free(units);
+    }
+
+    char *x = slurp(xdmf);
+    CHECK(x != NULL, "no %s", xdmf);
+    for (int k = 0; x && k < PARTICLE_FIELD_COUNT; k++) {
+        const particle_field *f = &particle_fields[k];
+        char item[256], attr[256];
+        snprintf(item, sizeof item, "particles.h5:/snapshots/000000/%s<", f->dataset);
+        snprintf(attr, sizeof attr, "<Attribute Name=\"%s\" AttributeType=\"%s\"", f->dataset,
+                 f->components == 3 ? "Vector" : "Scalar");
+        const int listed = strstr(x, item) != NULL;
+        CHECK(listed == ((f->flags & PF_WRITE) != 0), "xdmf: '%s' %s", f->dataset, listed ? "listed" : "missing");
+        if (listed && k != PF_FIELD_x) CHECK(strstr(x, attr) != NULL, "xdmf: no %s", attr);
+    }
+    CHECK(x && strstr(x, "<Geometry GeometryType=\"XYZ\">\n     <DataItem") != NULL, "xdmf: no geometry");
+    free(x);
+
+    fill_all(&r, 40);   /* garbage that the reader must overwrite or clear */
+    contact_state cs;
+    double t;
+    long step;
+    CHECK(io_read_snapshot_at(base, NAN, 0.0, &r, &t, &step, &cs) == 0 && r.n == N && t == 0.25 && step == 9,
+          "restart read: n %d t %g step %ld", r.n, t, step);
+    CHECK(cs.forces_read == 1, "restart read: the forces were not kept");
+    for (int k = 0; r.n == N && k < PARTICLE_FIELD_COUNT; k++) {
+        const particle_field *f = &particle_fields[k];
+        int bad = 0;
+        for (int i = 0; i < N; i++) bad += (f->flags & PF_RESTART) ? !holds(&r, k, i, i) : !is_zero(&r, k, i);
+        CHECK(!bad, "restart read: %s wrong at %d of %d particles (%s)", f->member, bad, N,
+              (f->flags & PF_RESTART) ? "expected as written" : "expected 0");
+    }
+    contact_state_free(&cs);
+
+    /* an older snapshot, without torque */
+    hid_t file = H5Fopen(h5, H5F_ACC_RDWR, H5P_DEFAULT);
+    H5Ldelete(file, "/snapshots/000000/torque", H5P_DEFAULT);
+    H5Fclose(file);
+    dem_logger old = dem_set_logger(count_warnings);
+    fill_all(&r, 40);
+    CHECK(io_read_snapshot_at(base, NAN, 0.0, &r, &t, &step, &cs) == 0 && r.n == N, "older file: not read");
+    dem_set_logger(old);
+    CHECK(warnings_about_torque == 1, "older file: %d warnings about torque", warnings_about_torque);
+    CHECK(cs.forces_read == 0, "older file: forces kept without torque");
+    int bad = 0;
+    for (int i = 0; r.n == N && i < N; i++) bad += !is_zero(&r, PF_FIELD_torque, i) || !holds(&r, PF_FIELD_f, i, i);
+    CHECK(!bad, "older file: torque not 0 or force not read at %d particles", bad);
+    contact_state_free(&cs);
+
+    particles_free(&p);
+    particles_free(&r);
+    if (!failures) {
+        remove(h5);
+        remove(xdmf);
+    }
+}
+
+int main(int argc, char **argv)
+{
+    const char *parent = argc > 1 ? argv[1] : "/tmp";
+    char dir[4096];
+    snprintf(dir, sizeof dir, "%s/test_fields_XXXXXX", parent);
+    if (!mkdtemp(dir)) {
+        perror("mkdtemp");
+        return 1;
+    }
+    check_table();
+    check_allocation();
+    check_add();
+    check_permute();
+    check_copy_and_pack();
+    check_snapshot(dir);
+    printf("fields:");
+    for (int k = 0; k < PARTICLE_FIELD_COUNT; k++)
+        printf(" %s%s%s%s", particle_fields[k].member, particle_fields[k].flags & PF_WRITE ? " W" : "",
+               particle_fields[k].flags & PF_RESTART ? " R" : "", particle_fields[k].flags & PF_MIGRATE ? " M" : "");
+    printf("\n");
+    if (failures) {
+        fprintf(stderr, "test_fields: files kept in %s\n", dir);
+        printf("test_fields: %d of %d checks FAILED\n", failures, checks);
+        return 1;
+    }
+    rmdir(dir);
+    printf("test_fields: %d checks passed for %d fields\n", checks, PARTICLE_FIELD_COUNT);
+    return 0;
+}
