@@ -75,28 +75,28 @@ static void read_coupling_properties(coupling *c, double dt_f, double *alpha_min
 {
     char path[4200];
     snprintf(path, sizeof path, "%s/constant/couplingProperties", c->case_dir);
-    dict *d = dict_read(path);
-    c->interval = (int)dict_label(d, "couplingInterval", 1, 1000000);
+    dict *d = dem_dict_read(path);
+    c->interval = (int)dem_dict_label(d, "couplingInterval", 1, 1000000);
     const double dt_dem = c->s.dt;
     if (fabs(dt_f - c->interval * dt_dem) > 1e-9 * dt_f)
-        dict_fatal(d, "couplingInterval", "the fluid time step (system/controlDict deltaT %g s) must equal "
+        dem_dict_fatal(d, "couplingInterval", "the fluid time step (system/controlDict deltaT %g s) must equal "
                    "couplingInterval x the DEM timeStep (%d x %g s = %g s)", dt_f, c->interval, dt_dem,
                    c->interval * dt_dem);
-    const dict *v = dict_sub(d, "voidFraction");
+    const dict *v = dem_dict_sub(d, "voidFraction");
     static const char *const vf_names[] = {"centre", "divided", "gaussian", 0};
-    *vf_model = (enum cpl_vf_model)dict_choice(v, "model", vf_names);
-    *alpha_min = dict_scalar_opt(v, "alphaMin", 0.3, 0.01, 0.99);
-    *kernel_width = *vf_model == CPL_VF_GAUSSIAN ? dict_scalar_opt(v, "kernelWidth", 0.5, 0.05, 20.0) : 0.0;
-    *kernel_cutoff = *vf_model == CPL_VF_GAUSSIAN ? dict_scalar_opt(v, "kernelCutoff", 3.0, 1.0, 10.0) : 0.0;
-    c->params.drag = (enum cpl_drag_law)dict_choice(d, "drag", cpl_drag_law_names);
-    c->params.model = (enum cpl_model_type)dict_choice(d, "momentumCoupling", cpl_model_type_names);
-    c->params.exchange = (enum cpl_exchange_mode)dict_choice_opt(d, "exchange", cpl_exchange_mode_names,
+    *vf_model = (enum cpl_vf_model)dem_dict_choice(v, "model", vf_names);
+    *alpha_min = dem_dict_scalar_opt(v, "alphaMin", 0.3, 0.01, 0.99);
+    *kernel_width = *vf_model == CPL_VF_GAUSSIAN ? dem_dict_scalar_opt(v, "kernelWidth", 0.5, 0.05, 20.0) : 0.0;
+    *kernel_cutoff = *vf_model == CPL_VF_GAUSSIAN ? dem_dict_scalar_opt(v, "kernelCutoff", 3.0, 1.0, 10.0) : 0.0;
+    c->params.drag = (enum cpl_drag_law)dem_dict_choice(d, "drag", cpl_drag_law_names);
+    c->params.model = (enum cpl_model_type)dem_dict_choice(d, "momentumCoupling", cpl_model_type_names);
+    c->params.exchange = (enum cpl_exchange_mode)dem_dict_choice_opt(d, "exchange", cpl_exchange_mode_names,
                                                                  CPL_EXCHANGE_IMPLICIT);
     static const char *const interp_names[] = {"cell", "cellLinear", "cellPoint", 0};
     static const enum cpl_interp_scheme schemes[] = {CPL_INTERP_CELL, CPL_INTERP_LINEAR, CPL_INTERP_CELL_POINT};
-    c->interp_scheme = schemes[dict_choice_opt(d, "interpolation", interp_names, 0)];
-    dict_check_unused(d);
-    dict_free(d);
+    c->interp_scheme = schemes[dem_dict_choice_opt(d, "interpolation", interp_names, 0)];
+    dem_dict_check_unused(d);
+    dem_dict_free(d);
 }
 
 static const char *interp_names_of(enum cpl_interp_scheme s)
@@ -284,7 +284,7 @@ static void open_means(coupling *c, const char *path)
 static void setup_particles(coupling *c, const char *case_dir, double t_start)
 {
     c->restarted = t_start > 0.0;
-    case_read(case_dir, &c->s, &c->rs, c->restarted);
+    dem_case_read(case_dir, &c->s, &c->rs, c->restarted);
     contact_state saved;
     memset(&saved, 0, sizeof saved);
     char base[4200];
@@ -298,21 +298,21 @@ static void setup_particles(coupling *c, const char *case_dir, double t_start)
                       "from the particle snapshot of that time in it (start from t = 0 to insert the particles)",
                       h5, t_start);
         fclose(probe);
-        if (restart_read(&c->s, base, t_start, 0.5 * c->s.dt, &saved) != 0)
+        if (dem_restart_read(&c->s, base, t_start, 0.5 * c->s.dt, &saved) != 0)
             dem_fatal("%s.h5: no complete particle snapshot at t = %g s, where the fluid starts (a coupled "
                       "run starts at t = 0, or continues from a write time: its fields and its particle "
                       "snapshot)", base, t_start);
         c->s.time = t_start;   /* the fluid's time name, exactly */
-        const int dropped = io_drop_snapshots_after(base, t_start);
+        const int dropped = dem_io_drop_snapshots_after(base, t_start);
         dem_info("coupling: continuing from %s.h5 at t = %g s (DEM step %ld), %d particles%s", base, c->s.time,
                  c->s.step, c->s.p.n, dropped ? "; later snapshots dropped" : "");
     }
     const double vmax = c->rs.max_expected_velocity > 0 ? c->rs.max_expected_velocity
-                                                        : case_default_max_velocity(&c->s);
-    timestep_check(&c->s, vmax, c->rs.timestep_override, c->rs.timestep_source);
-    restart_setup(&c->s, c->restarted ? &saved : NULL);
-    contact_state_free(&saved);
-    c->writer = io_open_writer(base, c->restarted);
+                                                        : dem_case_default_max_velocity(&c->s);
+    dem_timestep_check(&c->s, vmax, c->rs.timestep_override, c->rs.timestep_source);
+    dem_restart_setup(&c->s, c->restarted ? &saved : NULL);
+    dem_contact_state_free(&saved);
+    c->writer = dem_io_open_writer(base, c->restarted);
 }
 
 coupling *coupling_create(const char *case_dir, cpl_mesh *mesh, double rho_f, double nu_f, double dt_f,
@@ -323,7 +323,7 @@ coupling *coupling_create(const char *case_dir, cpl_mesh *mesh, double rho_f, do
     c->mesh = *mesh;                       /* the session takes the mesh over */
     memset(mesh, 0, sizeof *mesh);
 
-    system_init(&c->s);
+    dem_system_init(&c->s);
     setup_particles(c, case_dir, t_start);
 
     double alpha_min, kernel_width, kernel_cutoff;
@@ -372,7 +372,7 @@ void coupling_evolve(coupling *c, const double (*U)[3], const double (*grad_p)[3
     double fw[3] = {0.0, 0.0, 0.0}, ff[3] = {0.0, 0.0, 0.0};
     for (int k = 0; k < c->interval; k++) {            /* 2 */
         apply_fluid_forces(c);   /* implicit: at the current velocity; explicit: frozen (beta 0) */
-        system_step(&c->s);
+        dem_system_step(&c->s);
         for (int q = 0; q < 3; q++) fw[q] += c->s.wall_force[q];
         add_fluid_force(c, ff);
     }
@@ -380,7 +380,7 @@ void coupling_evolve(coupling *c, const double (*U)[3], const double (*grad_p)[3
         c->wall_force[q] = fw[q] / c->interval;
         c->fluid_force[q] = ff[q] / c->interval;
     }
-    system_check_health(&c->s);
+    dem_system_check_health(&c->s);
     double t2 = now();
     c->dem_seconds += t2 - t1;
     update_void_fraction(c);                            /* 3 */
@@ -417,9 +417,9 @@ void coupling_write(coupling *c, double time)
     if (fabs(time - c->s.time) > 0.5 * c->s.dt)
         dem_fatal("coupling: particle snapshot asked at t = %g s, but the DEM is at t = %g s", time, c->s.time);
     contact_state cs;
-    restart_save_contacts(&c->s, &cs);
-    io_write_snapshot_contacts(c->writer, &c->s.p, time, c->s.step, &cs);
-    contact_state_free(&cs);
+    dem_restart_save_contacts(&c->s, &cs);
+    dem_io_write_snapshot_contacts(c->writer, &c->s.p, time, c->s.step, &cs);
+    dem_contact_state_free(&cs);
 }
 
 int coupling_restarted(const coupling *c) { return c->restarted; }
@@ -434,14 +434,14 @@ void coupling_free(coupling *c)
 {
     if (!c) return;
     dem_info("coupling: wall time DEM %.2f s, coupling %.2f s", c->dem_seconds, c->coupling_seconds);
-    io_close_writer(c->writer);
+    dem_io_close_writer(c->writer);
     if (c->means) fclose(c->means);
     cpl_fluid_forces_free(&c->forces);
     if (c->interp_scheme != CPL_INTERP_CELL) cpl_interp_free(&c->interp);
     free(c->ugp); free(c->ugp_p); free(c->tets);
     cpl_vf_free(&c->vf);
     cpl_mesh_free(&c->mesh);
-    system_free(&c->s);
+    dem_system_free(&c->s);
     free(c->d); free(c->volume); free(c->alpha_p); free(c->u_p); free(c->gp_p);
     free(c->ksl); free(c->up); free(c->source);
     free(c);

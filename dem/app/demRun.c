@@ -34,9 +34,9 @@ static void write_snapshot(particle_writer *w, const dem_system *s)
 {
     if (s->step == last_written_step) return;
     contact_state cs;
-    restart_save_contacts(s, &cs);
-    io_write_snapshot_contacts(w, &s->p, s->time, s->step, &cs);
-    contact_state_free(&cs);
+    dem_restart_save_contacts(s, &cs);
+    dem_io_write_snapshot_contacts(w, &s->p, s->time, s->step, &cs);
+    dem_contact_state_free(&cs);
     last_written_step = s->step;
 }
 
@@ -47,7 +47,7 @@ static void run_steps(dem_system *s, long nsteps, long write_every, particle_wri
     const double start = wall_clock();
     double next_report = start + progress_interval;
     for (long k = 1; k <= nsteps; k++) {
-        system_step(s);
+        dem_system_step(s);
         if (write_every > 0 && s->step % write_every == 0) write_snapshot(w, s);
         if (progress_interval > 0 && (k & 63) == 0) {
             const double now = wall_clock();
@@ -77,25 +77,25 @@ int main(int argc, char **argv)
     setvbuf(stdout, NULL, _IOLBF, 0);
 
     dem_system s;
-    system_init(&s);
+    dem_system_init(&s);
     run_settings rs;
-    case_read(case_dir, &s, &rs, restart);
+    dem_case_read(case_dir, &s, &rs, restart);
 
     char base[4200];
     snprintf(base, sizeof base, "%s/particles", case_dir);
     contact_state saved;
     memset(&saved, 0, sizeof saved);
     if (restart) {
-        if (restart_read(&s, base, NAN, 0.0, &saved) != 0)
+        if (dem_restart_read(&s, base, NAN, 0.0, &saved) != 0)
             dem_fatal("%s.h5: no complete snapshot to restart from", base);
         printf("restart from %s.h5 at t = %g s (step %ld), %d particles\n", base, s.time, s.step, s.p.n);
     }
-    const double vmax = rs.max_expected_velocity > 0 ? rs.max_expected_velocity : case_default_max_velocity(&s);
-    timestep_check(&s, vmax, rs.timestep_override, rs.timestep_source);
-    restart_setup(&s, restart ? &saved : NULL);
-    contact_state_free(&saved);
+    const double vmax = rs.max_expected_velocity > 0 ? rs.max_expected_velocity : dem_case_default_max_velocity(&s);
+    dem_timestep_check(&s, vmax, rs.timestep_override, rs.timestep_source);
+    dem_restart_setup(&s, restart ? &saved : NULL);
+    dem_contact_state_free(&saved);
 
-    particle_writer *w = io_open_writer(base, restart);
+    particle_writer *w = dem_io_open_writer(base, restart);
     if (restart) last_written_step = s.step;
     else write_snapshot(w, &s);
 
@@ -122,15 +122,15 @@ int main(int argc, char **argv)
         run_steps(&s, nsteps, write_every, w, rs.progress_interval);
         total_steps = nsteps;
     }
-    system_check_health(&s);
+    dem_system_check_health(&s);
     write_snapshot(w, &s);
-    io_close_writer(w);
+    dem_io_close_writer(w);
     const double secs = wall_clock() - t0;
     printf("done: t = %g s, %ld steps in %.2f s wall (%.3g particle-steps/s), %ld neighbour "
            "builds, %ld sorts, kinetic energy %.6g J\n",
            s.time, total_steps, secs, secs > 0 ? (double)total_steps * s.p.n / secs : 0.0,
-           s.nlist.builds, s.nlist.sorts, system_kinetic_energy(&s));
+           s.nlist.builds, s.nlist.sorts, dem_system_kinetic_energy(&s));
     printf("neighbour list: %.2f pairs per particle (skin %g m)\n", s.p.n ? (double)s.nlist.npairs / s.p.n : 0.0, s.nlist.skin);
-    system_free(&s);
+    dem_system_free(&s);
     return 0;
 }

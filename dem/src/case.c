@@ -12,13 +12,13 @@ static const char *const axis_names[] = {"x", "y", "z", 0};
 
 static void read_domain(const dict *root, dem_system *s)
 {
-    const dict *d = dict_sub(root, "domain");
-    dict_vector(d, "min", s->domain_min);
-    dict_vector(d, "max", s->domain_max);
-    dict_bools3_opt(d, "periodic", s->periodic, 0);
+    const dict *d = dem_dict_sub(root, "domain");
+    dem_dict_vector(d, "min", s->domain_min);
+    dem_dict_vector(d, "max", s->domain_max);
+    dem_dict_bools3_opt(d, "periodic", s->periodic, 0);
     for (int k = 0; k < 3; k++)
         if (!(s->domain_max[k] > s->domain_min[k]))
-            dict_fatal(d, "max", "max must exceed min in every direction (%c: min %g, max %g)",
+            dem_dict_fatal(d, "max", "max must exceed min in every direction (%c: min %g, max %g)",
                        "xyz"[k], s->domain_min[k], s->domain_max[k]);
     for (int k = 0; k < 3; k++) {   /* as system_setup_begin: the insertions' overlap checks need it */
         s->period[k] = s->periodic[k] ? s->domain_max[k] - s->domain_min[k] : 0.0;
@@ -28,19 +28,19 @@ static void read_domain(const dict *root, dem_system *s)
 
 static void read_materials(const dict *root, dem_system *s)
 {
-    const dict *d = dict_sub(root, "materials");
+    const dict *d = dem_dict_sub(root, "materials");
     material_table *t = &s->materials;
-    for (int i = 0; i < dict_size(d); i++) {
-        if (!dict_is_dict_at(d, i)) dict_fatal(d, dict_key_at(d, i), "a material is a sub-dictionary { youngsModulus; poissonsRatio; density; }");
-        if (t->ntypes == DEM_MAX_TYPES) dict_fatal(d, dict_key_at(d, i), "at most %d materials", DEM_MAX_TYPES);
-        const dict *m = dict_dict_at(d, i);
+    for (int i = 0; i < dem_dict_size(d); i++) {
+        if (!dem_dict_is_dict_at(d, i)) dem_dict_fatal(d, dem_dict_key_at(d, i), "a material is a sub-dictionary { youngsModulus; poissonsRatio; density; }");
+        if (t->ntypes == DEM_MAX_TYPES) dem_dict_fatal(d, dem_dict_key_at(d, i), "at most %d materials", DEM_MAX_TYPES);
+        const dict *m = dem_dict_dict_at(d, i);
         material *mat = &t->mat[t->ntypes++];
-        snprintf(mat->name, sizeof mat->name, "%s", dict_key_at(d, i));
-        mat->youngs_modulus = dict_scalar(m, "youngsModulus", 1e3, 1e13);
-        mat->poisson_ratio = dict_scalar(m, "poissonsRatio", 0.0, 0.4999);
-        mat->density = dict_scalar(m, "density", 1.0, 1e5);
+        snprintf(mat->name, sizeof mat->name, "%s", dem_dict_key_at(d, i));
+        mat->youngs_modulus = dem_dict_scalar(m, "youngsModulus", 1e3, 1e13);
+        mat->poisson_ratio = dem_dict_scalar(m, "poissonsRatio", 0.0, 0.4999);
+        mat->density = dem_dict_scalar(m, "density", 1.0, 1e5);
     }
-    if (t->ntypes == 0) dict_fatal_here(d, "define at least one material");
+    if (t->ntypes == 0) dem_dict_fatal_here(d, "define at least one material");
 }
 
 /* "a-b" -> two material indices (names may themselves contain '-'). */
@@ -52,8 +52,8 @@ static int split_pair(const material_table *t, const char *key, int *a, int *b)
         if (len >= sizeof buf) break;
         memcpy(buf, key, len);
         buf[len] = 0;
-        *a = materials_find(t, buf);
-        *b = materials_find(t, dash + 1);
+        *a = dem_materials_find(t, buf);
+        *b = dem_materials_find(t, dash + 1);
         if (*a >= 0 && *b >= 0) return 1;
     }
     return 0;
@@ -67,58 +67,58 @@ static void read_model_values(const dict *e, const dict *def, const contact_mode
                               double values[SLOT_COUNT][MODEL_VALUES])
 {
     for (int slot = 0; slot < SLOT_COUNT; slot++) {
-        const contact_model *md = contact_model_get(slot, contact_model_id(m, slot));
+        const contact_model *md = dem_contact_model_get(slot, contact_model_id(m, slot));
         for (int k = 0; k < MODEL_VALUES; k++) values[slot][k] = 0.0;
         for (int k = 0; k < md->nparams; k++) {
             const model_param *mp = &md->params[k];
-            const dict *src = dict_has(e, mp->key) ? e : def && dict_has(def, mp->key) ? def : NULL;
+            const dict *src = dem_dict_has(e, mp->key) ? e : def && dem_dict_has(def, mp->key) ? def : NULL;
             if (!src && isnan(mp->fallback))
-                dict_fatal_here(e, "the %s %s model needs '%s' [%s] in this interaction (or in 'default')",
+                dem_dict_fatal_here(e, "the %s %s model needs '%s' [%s] in this interaction (or in 'default')",
                                 md->name, slot_names[slot], mp->key, mp->unit);
-            values[slot][mp->offset / sizeof(double)] = src ? dict_scalar(src, mp->key, mp->lo, mp->hi) : mp->fallback;
+            values[slot][mp->offset / sizeof(double)] = src ? dem_dict_scalar(src, mp->key, mp->lo, mp->hi) : mp->fallback;
         }
         const char *key, *message = md->check ? md->check(values[slot], &key) : NULL;
         if (message) {
             double got = NAN;
             for (int k = 0; k < md->nparams; k++)
                 if (strcmp(md->params[k].key, key) == 0) got = values[slot][md->params[k].offset / sizeof(double)];
-            dict_fatal(dict_has(e, key) || !def ? e : def, key, "%s (got %g)", message, got);
+            dem_dict_fatal(dem_dict_has(e, key) || !def ? e : def, key, "%s (got %g)", message, got);
         }
     }
 }
 
 static void read_interactions(const dict *root, dem_system *s)
 {
-    const dict *d = dict_sub(root, "interactions");
+    const dict *d = dem_dict_sub(root, "interactions");
     material_table *t = &s->materials;
     int set[DEM_MAX_TYPES][DEM_MAX_TYPES] = {{0}};
-    const dict *def = dict_sub_opt(d, "default");
+    const dict *def = dem_dict_sub_opt(d, "default");
     for (int pass = 0; pass < 2; pass++) {       /* default first, then the named pairs */
-        for (int i = 0; i < dict_size(d); i++) {
-            const char *key = dict_key_at(d, i);
+        for (int i = 0; i < dem_dict_size(d); i++) {
+            const char *key = dem_dict_key_at(d, i);
             const int is_default = strcmp(key, "default") == 0;
             if (is_default != (pass == 0)) continue;
-            const dict *e = is_default ? def : dict_dict_at(d, i);
-            if (!e) dict_fatal(d, key, "an interaction is a sub-dictionary { restitution; friction; }");
-            const double rest = dict_scalar(e, "restitution", 1e-6, 1.0);
-            const double mu = dict_scalar(e, "friction", 0.0, 10.0);
+            const dict *e = is_default ? def : dem_dict_dict_at(d, i);
+            if (!e) dem_dict_fatal(d, key, "an interaction is a sub-dictionary { restitution; friction; }");
+            const double rest = dem_dict_scalar(e, "restitution", 1e-6, 1.0);
+            const double mu = dem_dict_scalar(e, "friction", 0.0, 10.0);
             double mv[SLOT_COUNT][MODEL_VALUES];
             read_model_values(e, is_default ? NULL : def, &s->models, mv);
             if (is_default) {
                 for (int a = 0; a < t->ntypes; a++)
                     for (int b = 0; b < t->ntypes; b++) {
-                        materials_set_pair(t, a, b, rest, mu);
+                        dem_materials_set_pair(t, a, b, rest, mu);
                         for (int slot = 0; slot < SLOT_COUNT; slot++)
-                            materials_set_model_values(t, a, b, slot, mv[slot], sizeof mv[slot]);
+                            dem_materials_set_model_values(t, a, b, slot, mv[slot], sizeof mv[slot]);
                         set[a][b] = 1;
                     }
             } else {
                 int a, b;
                 if (!split_pair(t, key, &a, &b))
-                    dict_fatal(d, key, "expected '<material>-<material>' with two defined materials, or 'default'");
-                materials_set_pair(t, a, b, rest, mu);
+                    dem_dict_fatal(d, key, "expected '<material>-<material>' with two defined materials, or 'default'");
+                dem_materials_set_pair(t, a, b, rest, mu);
                 for (int slot = 0; slot < SLOT_COUNT; slot++)
-                    materials_set_model_values(t, a, b, slot, mv[slot], sizeof mv[slot]);
+                    dem_materials_set_model_values(t, a, b, slot, mv[slot], sizeof mv[slot]);
                 set[a][b] = set[b][a] = 1;
             }
         }
@@ -126,7 +126,7 @@ static void read_interactions(const dict *root, dem_system *s)
     for (int a = 0; a < t->ntypes; a++)
         for (int b = 0; b < t->ntypes; b++)
             if (!set[a][b])
-                dict_fatal_here(d, "no entry for the pair %s-%s (add it, or a 'default' entry)",
+                dem_dict_fatal_here(d, "no entry for the pair %s-%s (add it, or a 'default' entry)",
                                 t->mat[a].name, t->mat[b].name);
 }
 
@@ -134,44 +134,44 @@ static void read_interactions(const dict *root, dem_system *s)
  * their slot's first model), limitForce, and each chosen model's case-wide settings. */
 static void read_models(const dict *root, dem_system *s)
 {
-    const dict *d = dict_sub(root, "contactModels");
+    const dict *d = dem_dict_sub(root, "contactModels");
     contact_models *m = &s->models;
     int *const ids[SLOT_COUNT] = {&m->normal, &m->tangential, &m->cohesion, &m->rolling, &m->surface};
     for (int slot = 0; slot < SLOT_COUNT; slot++)
         *ids[slot] = slot == SLOT_NORMAL || slot == SLOT_TANGENTIAL
-            ? dict_choice(d, slot_names[slot], contact_model_names(slot))
-            : dict_choice_opt(d, slot_names[slot], contact_model_names(slot), 0);
-    m->fn_floor = dict_bool_opt(d, "limitForce", 0) ? 0.0 : -INFINITY;
+            ? dem_dict_choice(d, slot_names[slot], dem_contact_model_names(slot))
+            : dem_dict_choice_opt(d, slot_names[slot], dem_contact_model_names(slot), 0);
+    m->fn_floor = dem_dict_bool_opt(d, "limitForce", 0) ? 0.0 : -INFINITY;
     for (int slot = 0; slot < SLOT_COUNT; slot++) {
-        const contact_model *md = contact_model_get(slot, *ids[slot]);
+        const contact_model *md = dem_contact_model_get(slot, *ids[slot]);
         if (md->read_case) md->read_case(d, m->values[slot]);
     }
 }
 
 static int material_of(const dict *d, const material_table *t)
 {
-    const char *name = dict_word(d, "material");
-    const int k = materials_find(t, name);
-    if (k < 0) dict_fatal(d, "material", "'%s' is not among the materials", name);
+    const char *name = dem_dict_word(d, "material");
+    const int k = dem_materials_find(t, name);
+    if (k < 0) dem_dict_fatal(d, "material", "'%s' is not among the materials", name);
     return k;
 }
 
 /* axis, centre (the two coordinates across the axis) and radius of a cylinder wall or region */
 static void read_cylinder(const dict *d, int *axis, double centre[2], double *radius)
 {
-    *axis = dict_choice(d, "axis", axis_names);
+    *axis = dem_dict_choice(d, "axis", axis_names);
     double *c;
-    if (dict_scalar_list(d, "centre", &c) != 2)
-        dict_fatal(d, "centre", "give the two coordinates across the axis, e.g. (0 0)");
+    if (dem_dict_scalar_list(d, "centre", &c) != 2)
+        dem_dict_fatal(d, "centre", "give the two coordinates across the axis, e.g. (0 0)");
     centre[0] = c[0];
     centre[1] = c[1];
     free(c);
-    *radius = dict_scalar(d, "radius", 1e-9, 1e6);
+    *radius = dem_dict_scalar(d, "radius", 1e-9, 1e6);
 }
 
 static wall *new_wall(dem_system *s, const dict *d, const char *name)
 {
-    wall *w = walls_add(s);
+    wall *w = dem_walls_add(s);
     snprintf(w->name, sizeof w->name, "%s", name);
     return w;
 }
@@ -180,26 +180,26 @@ static wall *new_wall(dem_system *s, const dict *d, const char *name)
  * the domain (its point inside the domain box) and may not cut a periodic direction. */
 static void read_symmetry_plane(const dict *e, const char *name, dem_system *s)
 {
-    if (dict_has(e, "material"))
-        dict_fatal(e, "material", "a symmetryPlane exerts no force and takes no material");
-    if (s->nsymmetry == DEM_MAX_SYMMETRY_PLANES) dict_fatal_here(e, "at most %d symmetry planes", DEM_MAX_SYMMETRY_PLANES);
+    if (dem_dict_has(e, "material"))
+        dem_dict_fatal(e, "material", "a symmetryPlane exerts no force and takes no material");
+    if (s->nsymmetry == DEM_MAX_SYMMETRY_PLANES) dem_dict_fatal_here(e, "at most %d symmetry planes", DEM_MAX_SYMMETRY_PLANES);
     symmetry_plane *sp = &s->symmetry_planes[s->nsymmetry++];
     memset(sp, 0, sizeof *sp);
     snprintf(sp->name, sizeof sp->name, "%s", name);
-    dict_vector(e, "point", sp->point);
-    dict_vector(e, "normal", sp->normal);
+    dem_dict_vector(e, "point", sp->point);
+    dem_dict_vector(e, "normal", sp->normal);
     const double len = sqrt(sp->normal[0] * sp->normal[0] + sp->normal[1] * sp->normal[1] + sp->normal[2] * sp->normal[2]);
-    if (!(len > 0.0)) dict_fatal(e, "normal", "the normal must not be zero");
+    if (!(len > 0.0)) dem_dict_fatal(e, "normal", "the normal must not be zero");
     for (int k = 0; k < 3; k++) sp->normal[k] /= len;
     for (int k = 0; k < 3; k++) {
         const double slack = 1e-9 * (s->domain_max[k] - s->domain_min[k]);
         if (!(sp->point[k] >= s->domain_min[k] - slack && sp->point[k] <= s->domain_max[k] + slack))
-            dict_fatal(e, "point", "a symmetryPlane must lie within the domain: point (%g %g %g) is outside "
+            dem_dict_fatal(e, "point", "a symmetryPlane must lie within the domain: point (%g %g %g) is outside "
                        "min (%g %g %g) max (%g %g %g)", sp->point[0], sp->point[1], sp->point[2],
                        s->domain_min[0], s->domain_min[1], s->domain_min[2],
                        s->domain_max[0], s->domain_max[1], s->domain_max[2]);
         if (s->periodic[k] && fabs(sp->normal[k]) > 1e-12)
-            dict_fatal(e, "normal", "a symmetryPlane cannot cut the periodic direction %c (its normal must be "
+            dem_dict_fatal(e, "normal", "a symmetryPlane cannot cut the periodic direction %c (its normal must be "
                        "perpendicular to it)", "xyz"[k]);
     }
     sp->offset = sp->point[0] * sp->normal[0] + sp->point[1] * sp->normal[1] + sp->point[2] * sp->normal[2];
@@ -207,14 +207,14 @@ static void read_symmetry_plane(const dict *e, const char *name, dem_system *s)
 
 static void read_walls(const dict *root, dem_system *s)
 {
-    const dict *d = dict_sub_opt(root, "walls");
+    const dict *d = dem_dict_sub_opt(root, "walls");
     if (!d) return;
     static const char *const kinds[] = {"plane", "box", "cylinder", "symmetryPlane", 0};
-    for (int i = 0; i < dict_size(d); i++) {
-        const char *name = dict_key_at(d, i);
-        if (!dict_is_dict_at(d, i)) dict_fatal(d, name, "a wall is a sub-dictionary { type ...; }");
-        const dict *e = dict_dict_at(d, i);
-        const int kind = dict_choice(e, "type", kinds);
+    for (int i = 0; i < dem_dict_size(d); i++) {
+        const char *name = dem_dict_key_at(d, i);
+        if (!dem_dict_is_dict_at(d, i)) dem_dict_fatal(d, name, "a wall is a sub-dictionary { type ...; }");
+        const dict *e = dem_dict_dict_at(d, i);
+        const int kind = dem_dict_choice(e, "type", kinds);
         if (kind == 3) {
             read_symmetry_plane(e, name, s);
             continue;
@@ -224,22 +224,22 @@ static void read_walls(const dict *root, dem_system *s)
             wall *w = new_wall(s, e, name);
             w->kind = WALL_PLANE;
             w->material = mat;
-            dict_vector(e, "point", w->point);
-            dict_vector(e, "normal", w->normal);
+            dem_dict_vector(e, "point", w->point);
+            dem_dict_vector(e, "normal", w->normal);
             const double len = sqrt(w->normal[0] * w->normal[0] + w->normal[1] * w->normal[1] + w->normal[2] * w->normal[2]);
-            if (!(len > 0.0)) dict_fatal(e, "normal", "the normal must not be zero");
+            if (!(len > 0.0)) dem_dict_fatal(e, "normal", "the normal must not be zero");
             for (int k = 0; k < 3; k++) w->normal[k] /= len;
-            if (dict_has(e, "boundsMin") || dict_has(e, "boundsMax")) {
+            if (dem_dict_has(e, "boundsMin") || dem_dict_has(e, "boundsMax")) {
                 w->bounded = 1;
-                dict_vector(e, "boundsMin", w->bounds_min);
-                dict_vector(e, "boundsMax", w->bounds_max);
+                dem_dict_vector(e, "boundsMin", w->bounds_min);
+                dem_dict_vector(e, "boundsMax", w->bounds_max);
             }
         } else if (kind == 1) {
             double lo[3], hi[3];
-            dict_vector(e, "min", lo);
-            dict_vector(e, "max", hi);
+            dem_dict_vector(e, "min", lo);
+            dem_dict_vector(e, "max", hi);
             for (int k = 0; k < 3; k++)
-                if (!(hi[k] > lo[k])) dict_fatal(e, "max", "max must exceed min in every direction");
+                if (!(hi[k] > lo[k])) dem_dict_fatal(e, "max", "max must exceed min in every direction");
             for (int k = 0; k < 6; k++) {   /* six bounded faces, normals pointing inwards */
                 char face[80];
                 snprintf(face, sizeof face, "%s.%s%s", name, axis_names[k / 2], k % 2 ? "Max" : "Min");
@@ -259,39 +259,39 @@ static void read_walls(const dict *root, dem_system *s)
             w->material = mat;
             read_cylinder(e, &w->axis, w->centre, &w->radius);
             static const char *const sides[] = {"inside", "outside", 0};
-            w->inside = dict_choice_opt(e, "side", sides, 0) == 0;
-            w->axial_min = dict_scalar_opt(e, "axialMin", -INFINITY, -INFINITY, INFINITY);
-            w->axial_max = dict_scalar_opt(e, "axialMax", INFINITY, -INFINITY, INFINITY);
+            w->inside = dem_dict_choice_opt(e, "side", sides, 0) == 0;
+            w->axial_min = dem_dict_scalar_opt(e, "axialMin", -INFINITY, -INFINITY, INFINITY);
+            w->axial_max = dem_dict_scalar_opt(e, "axialMax", INFINITY, -INFINITY, INFINITY);
         }
     }
 }
 
 static void read_diameter(const dict *e, insertion *ins)
 {
-    const dict *d = dict_sub(e, "diameter");
+    const dict *d = dem_dict_sub(e, "diameter");
     static const char *const dists[] = {"constant", "uniform", "normal", "discrete", 0};
-    ins->dist = dict_choice(d, "distribution", dists);
+    ins->dist = dem_dict_choice(d, "distribution", dists);
     switch (ins->dist) {
-    case SIZE_CONSTANT: ins->d_value = dict_scalar(d, "value", 1e-9, 10.0); break;
+    case SIZE_CONSTANT: ins->d_value = dem_dict_scalar(d, "value", 1e-9, 10.0); break;
     case SIZE_UNIFORM:
     case SIZE_NORMAL:
         if (ins->dist == SIZE_NORMAL) {
-            ins->d_mean = dict_scalar(d, "mean", 1e-9, 10.0);
-            ins->d_std = dict_scalar(d, "stdDev", 0.0, 10.0);
+            ins->d_mean = dem_dict_scalar(d, "mean", 1e-9, 10.0);
+            ins->d_std = dem_dict_scalar(d, "stdDev", 0.0, 10.0);
         }
-        ins->d_min = dict_scalar(d, "min", 1e-9, 10.0);
-        ins->d_max = dict_scalar(d, "max", ins->d_min, 10.0);
+        ins->d_min = dem_dict_scalar(d, "min", 1e-9, 10.0);
+        ins->d_max = dem_dict_scalar(d, "max", ins->d_min, 10.0);
         if (ins->dist == SIZE_NORMAL && (ins->d_mean < ins->d_min || ins->d_mean > ins->d_max))
-            dict_fatal(d, "mean", "the mean %g m must lie within [min, max] = [%g, %g] m", ins->d_mean, ins->d_min, ins->d_max);
+            dem_dict_fatal(d, "mean", "the mean %g m must lie within [min, max] = [%g, %g] m", ins->d_mean, ins->d_min, ins->d_max);
         break;
     case SIZE_DISCRETE: {
-        ins->ndiscrete = dict_scalar_list(d, "values", &ins->d_values);
-        const int nw = dict_scalar_list(d, "weights", &ins->d_weights);
-        if (ins->ndiscrete == 0) dict_fatal(d, "values", "give at least one diameter");
-        if (nw != ins->ndiscrete) dict_fatal(d, "weights", "%d weights for %d values", nw, ins->ndiscrete);
+        ins->ndiscrete = dem_dict_scalar_list(d, "values", &ins->d_values);
+        const int nw = dem_dict_scalar_list(d, "weights", &ins->d_weights);
+        if (ins->ndiscrete == 0) dem_dict_fatal(d, "values", "give at least one diameter");
+        if (nw != ins->ndiscrete) dem_dict_fatal(d, "weights", "%d weights for %d values", nw, ins->ndiscrete);
         for (int k = 0; k < nw; k++) {
-            if (!(ins->d_values[k] > 0.0)) dict_fatal(d, "values", "diameters must be positive (got %g)", ins->d_values[k]);
-            if (!(ins->d_weights[k] >= 0.0)) dict_fatal(d, "weights", "weights must not be negative (got %g)", ins->d_weights[k]);
+            if (!(ins->d_values[k] > 0.0)) dem_dict_fatal(d, "values", "diameters must be positive (got %g)", ins->d_values[k]);
+            if (!(ins->d_weights[k] >= 0.0)) dem_dict_fatal(d, "weights", "weights must not be negative (got %g)", ins->d_weights[k]);
         }
         break;
     }
@@ -300,86 +300,86 @@ static void read_diameter(const dict *e, insertion *ins)
 
 static void read_region(const dict *e, insertion *ins)
 {
-    const dict *r = dict_sub(e, "region");
+    const dict *r = dem_dict_sub(e, "region");
     static const char *const kinds[] = {"box", "cylinder", 0};
-    ins->region = dict_choice(r, "type", kinds);
+    ins->region = dem_dict_choice(r, "type", kinds);
     if (ins->region == REGION_BOX) {
-        dict_vector(r, "min", ins->min);
-        dict_vector(r, "max", ins->max);
+        dem_dict_vector(r, "min", ins->min);
+        dem_dict_vector(r, "max", ins->max);
         for (int k = 0; k < 3; k++)
-            if (!(ins->max[k] > ins->min[k])) dict_fatal(r, "max", "max must exceed min in every direction");
+            if (!(ins->max[k] > ins->min[k])) dem_dict_fatal(r, "max", "max must exceed min in every direction");
     } else {
         read_cylinder(r, &ins->axis, ins->centre, &ins->radius);
-        ins->min[ins->axis] = dict_scalar(r, "axialMin", -1e6, 1e6);
-        ins->max[ins->axis] = dict_scalar(r, "axialMax", ins->min[ins->axis], 1e6);
+        ins->min[ins->axis] = dem_dict_scalar(r, "axialMin", -1e6, 1e6);
+        ins->max[ins->axis] = dem_dict_scalar(r, "axialMax", ins->min[ins->axis], 1e6);
     }
 }
 
 /* The lattice spacing: one number (cubic) or (dx dy dz); at least the largest diameter. */
 static void read_spacing(const dict *e, insertion *ins)
 {
-    dict_scalar_or_vector(e, "spacing", 1e-9, 1e3, ins->spacing);
-    const double dmax = insertion_max_diameter(ins);
+    dem_dict_scalar_or_vector(e, "spacing", 1e-9, 1e3, ins->spacing);
+    const double dmax = dem_insertion_max_diameter(ins);
     const double smin = fmin(fmin(ins->spacing[0], ins->spacing[1]), ins->spacing[2]);
     if (smin < dmax)
-        dict_fatal(e, "spacing", "insertion '%s': the spacing %g m is smaller than the largest diameter %g m%s: "
+        dem_dict_fatal(e, "spacing", "insertion '%s': the spacing %g m is smaller than the largest diameter %g m%s: "
                    "neighbouring lattice particles would overlap", ins->name, smin, dmax,
                    ins->dist == SIZE_CONSTANT ? "" : " (the distribution's largest)");
 }
 
 static void run_insertions(const dict *root, dem_system *s, int insert, const char *constant_dir)
 {
-    const dict *d = dict_sub_opt(root, "insertion");
+    const dict *d = dem_dict_sub_opt(root, "insertion");
     if (!d) return;
     static const char *const methods[] = {"random", "lattice", "file", 0};
-    for (int i = 0; i < dict_size(d); i++) {
-        const char *name = dict_key_at(d, i);
-        if (!dict_is_dict_at(d, i)) dict_fatal(d, name, "an insertion is a sub-dictionary");
-        const dict *e = dict_dict_at(d, i);
+    for (int i = 0; i < dem_dict_size(d); i++) {
+        const char *name = dem_dict_key_at(d, i);
+        if (!dem_dict_is_dict_at(d, i)) dem_dict_fatal(d, name, "an insertion is a sub-dictionary");
+        const dict *e = dem_dict_dict_at(d, i);
         insertion ins;
         memset(&ins, 0, sizeof ins);
         snprintf(ins.name, sizeof ins.name, "%s", name);
-        ins.method = dict_choice_opt(e, "method", methods, INSERT_RANDOM);
+        ins.method = dem_dict_choice_opt(e, "method", methods, INSERT_RANDOM);
         const double zero[3] = {0, 0, 0};
-        dict_vector_opt(e, "velocity", ins.velocity, zero);
-        ins.seed = (uint64_t)dict_label_opt(e, "seed", 12345, 0, 2147483647L);
+        dem_dict_vector_opt(e, "velocity", ins.velocity, zero);
+        ins.seed = (uint64_t)dem_dict_label_opt(e, "seed", 12345, 0, 2147483647L);
         if (ins.method == INSERT_FILE) {
-            const char *f = dict_word(e, "file");
+            const char *f = dem_dict_word(e, "file");
             const int n = f[0] == '/' ? snprintf(ins.file, sizeof ins.file, "%s", f)
                                       : snprintf(ins.file, sizeof ins.file, "%s/%s", constant_dir, f);
-            if (n >= (int)sizeof ins.file) dict_fatal(e, "file", "the path is too long");
-            ins.material = dict_has(e, "material") ? material_of(e, &s->materials) : -1;
-            ins.has_diameter = dict_has(e, "diameter");
+            if (n >= (int)sizeof ins.file) dem_dict_fatal(e, "file", "the path is too long");
+            ins.material = dem_dict_has(e, "material") ? material_of(e, &s->materials) : -1;
+            ins.has_diameter = dem_dict_has(e, "diameter");
             if (ins.has_diameter) read_diameter(e, &ins);
         } else {
             read_region(e, &ins);
             ins.material = material_of(e, &s->materials);
             read_diameter(e, &ins);
             if (ins.method == INSERT_RANDOM) {
-                if (dict_has(e, "number") == dict_has(e, "solidFraction"))
-                    dict_fatal_here(e, "give exactly one of 'number' and 'solidFraction'");
-                ins.number = dict_label_opt(e, "number", 0, 1, 100000000);
-                ins.solid_fraction = dict_scalar_opt(e, "solidFraction", 0.0, 1e-6, 0.6);
-                ins.max_attempts = (int)dict_label_opt(e, "maxAttempts", 200, 1, 100000000);
+                if (dem_dict_has(e, "number") == dem_dict_has(e, "solidFraction"))
+                    dem_dict_fatal_here(e, "give exactly one of 'number' and 'solidFraction'");
+                ins.number = dem_dict_label_opt(e, "number", 0, 1, 100000000);
+                ins.solid_fraction = dem_dict_scalar_opt(e, "solidFraction", 0.0, 1e-6, 0.6);
+                ins.max_attempts = (int)dem_dict_label_opt(e, "maxAttempts", 200, 1, 100000000);
             } else {
                 read_spacing(e, &ins);
-                ins.number = dict_label_opt(e, "number", 0, 1, 100000000);   /* 0: the whole lattice */
+                ins.number = dem_dict_label_opt(e, "number", 0, 1, 100000000);   /* 0: the whole lattice */
                 const double g = sqrt(s->gravity[0] * s->gravity[0] + s->gravity[1] * s->gravity[1] +
                                       s->gravity[2] * s->gravity[2]);
                 for (int k = 0; k < 3; k++) ins.down[k] = g > 0.0 ? s->gravity[k] / g : (k == 2 ? -1.0 : 0.0);
             }
             for (int k = 0; k < 3; k++)
                 if (ins.region == REGION_BOX && (ins.min[k] < s->domain_min[k] || ins.max[k] > s->domain_max[k]))
-                    dict_fatal(dict_sub(e, "region"), "min", "the region must lie inside the domain");
+                    dem_dict_fatal(dem_dict_sub(e, "region"), "min", "the region must lie inside the domain");
         }
         if (insert) {   /* skipped on restart: the particles come from the snapshot */
             switch (ins.method) {
-            case INSERT_RANDOM: dem_info("insertion '%s': %ld particles", name, insertion_run(s, &ins)); break;
+            case INSERT_RANDOM: dem_info("insertion '%s': %ld particles", name, dem_insertion_run(s, &ins)); break;
             case INSERT_LATTICE:
-                dem_info("insertion '%s': %ld particles (lattice)", name, insertion_lattice(s, &ins, e));
+                dem_info("insertion '%s': %ld particles (lattice)", name, dem_insertion_lattice(s, &ins, e));
                 break;
             case INSERT_FILE:
-                dem_info("insertion '%s': %ld particles (from %s)", name, insertion_file(s, &ins, e), ins.file);
+                dem_info("insertion '%s': %ld particles (from %s)", name, dem_insertion_file(s, &ins, e), ins.file);
                 break;
             }
         }
@@ -390,7 +390,7 @@ static void run_insertions(const dict *root, dem_system *s, int insert, const ch
 
 /* Default for the contact-time check: the fastest insertion speed plus a free fall over the
  * domain's extent along gravity. */
-double case_default_max_velocity(const dem_system *s)
+double dem_case_default_max_velocity(const dem_system *s)
 {
     double vmax = 0.0, g = 0.0, h = 0.0;
     for (int i = 0; i < s->p.n; i++) {
@@ -404,21 +404,21 @@ double case_default_max_velocity(const dem_system *s)
     return fmax(vmax + sqrt(2.0 * sqrt(g) * h), 0.1);
 }
 
-void case_read(const char *case_dir, dem_system *s, run_settings *rs, int skip_insertion)
+void dem_case_read(const char *case_dir, dem_system *s, run_settings *rs, int skip_insertion)
 {
     snprintf(rs->dict_path, sizeof rs->dict_path, "%s/constant/demProperties", case_dir);
-    dict *root = dict_read(rs->dict_path);
-    s->dt = dict_scalar(root, "timeStep", 1e-12, 1.0);
-    snprintf(rs->timestep_source, sizeof rs->timestep_source, "%s:%d", rs->dict_path, dict_key_line(root, "timeStep"));
-    rs->end_time = dict_scalar(root, "endTime", 0.0, 1e9);
-    rs->write_interval = dict_scalar_opt(root, "writeInterval", 0.0, 0.0, 1e9);
-    rs->progress_interval = dict_scalar_opt(root, "progressInterval", 5.0, 0.0, 1e6);
+    dict *root = dem_dict_read(rs->dict_path);
+    s->dt = dem_dict_scalar(root, "timeStep", 1e-12, 1.0);
+    snprintf(rs->timestep_source, sizeof rs->timestep_source, "%s:%d", rs->dict_path, dem_dict_key_line(root, "timeStep"));
+    rs->end_time = dem_dict_scalar(root, "endTime", 0.0, 1e9);
+    rs->write_interval = dem_dict_scalar_opt(root, "writeInterval", 0.0, 0.0, 1e9);
+    rs->progress_interval = dem_dict_scalar_opt(root, "progressInterval", 5.0, 0.0, 1e6);
     const double zero[3] = {0, 0, 0};
-    dict_vector_opt(root, "gravity", s->gravity, zero);
-    s->nlist.skin = dict_scalar_opt(root, "skin", 0.0, 0.0, 10.0);
-    s->nlist.sort_interval = (int)dict_label_opt(root, "sortInterval", 20, 0, 1000000);
-    s->max_overlap_fraction = dict_scalar_opt(root, "maxOverlapFraction", 0.2, 1e-6, 1.0);
-    rs->timestep_override = dict_bool_opt(root, "timeStepOverride", 0);
+    dem_dict_vector_opt(root, "gravity", s->gravity, zero);
+    s->nlist.skin = dem_dict_scalar_opt(root, "skin", 0.0, 0.0, 10.0);
+    s->nlist.sort_interval = (int)dem_dict_label_opt(root, "sortInterval", 20, 0, 1000000);
+    s->max_overlap_fraction = dem_dict_scalar_opt(root, "maxOverlapFraction", 0.2, 1e-6, 1.0);
+    rs->timestep_override = dem_dict_bool_opt(root, "timeStepOverride", 0);
 
     read_domain(root, s);
     read_materials(root, s);
@@ -428,8 +428,8 @@ void case_read(const char *case_dir, dem_system *s, run_settings *rs, int skip_i
     char constant_dir[4200];
     snprintf(constant_dir, sizeof constant_dir, "%s/constant", case_dir);
     run_insertions(root, s, !skip_insertion, constant_dir);
-    rs->max_expected_velocity = dict_has(root, "maxExpectedVelocity")
-        ? dict_scalar(root, "maxExpectedVelocity", 1e-6, 1e5) : -1.0;
-    dict_check_unused(root);
-    dict_free(root);
+    rs->max_expected_velocity = dem_dict_has(root, "maxExpectedVelocity")
+        ? dem_dict_scalar(root, "maxExpectedVelocity", 1e-6, 1e5) : -1.0;
+    dem_dict_check_unused(root);
+    dem_dict_free(root);
 }

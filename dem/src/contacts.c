@@ -6,23 +6,23 @@
 #include "error.h"
 #include "system.h"
 
-void contact_store_init(contact_store *cs, int history_size, int antisymmetric)
+void dem_contact_store_init(contact_store *cs, int history_size, int antisymmetric)
 {
     memset(cs, 0, sizeof *cs);
     cs->history_size = history_size;
     cs->antisymmetric = antisymmetric;
 }
 
-void contact_store_free(contact_store *cs)
+void dem_contact_store_free(contact_store *cs)
 {
     free(cs->first);
     free(cs->second);
     free(cs->history);
     free(cs->used);
-    contact_store_init(cs, 0, 0);
+    dem_contact_store_init(cs, 0, 0);
 }
 
-void contact_store_clear(contact_store *cs)
+void dem_contact_store_clear(contact_store *cs)
 {
     if (cs->used) memset(cs->used, 0, (size_t)cs->capacity);
     cs->count = 0;
@@ -51,14 +51,14 @@ static void grow(contact_store *cs)
     cs->used = dem_calloc((size_t)cs->capacity, 1);
     cs->count = 0;
     for (long k = 0; k < old.capacity; k++)
-        if (old.used[k]) contact_store_put(cs, old.first[k], old.second[k], old.history + (size_t)k * hs);
+        if (old.used[k]) dem_contact_store_put(cs, old.first[k], old.second[k], old.history + (size_t)k * hs);
     free(old.first);
     free(old.second);
     free(old.history);
     free(old.used);
 }
 
-void contact_store_put(contact_store *cs, int64_t first, int64_t second, const double *h)
+void dem_contact_store_put(contact_store *cs, int64_t first, int64_t second, const double *h)
 {
     if (2 * (cs->count + 1) > cs->capacity) grow(cs);   /* at most half full */
     size_t k = home_slot(cs, first, second);
@@ -71,37 +71,37 @@ void contact_store_put(contact_store *cs, int64_t first, int64_t second, const d
     memcpy(cs->history + k * cs->history_size, h, (size_t)cs->history_size * sizeof(double));
 }
 
-int contact_store_take(const contact_store *cs, int64_t first, int64_t second, double *h)
+int dem_contact_store_take(const contact_store *cs, int64_t first, int64_t second, double *h)
 {
     if (cs->count == 0) return 0;
     for (size_t k = home_slot(cs, first, second); cs->used[k]; k = (k + 1) & (size_t)(cs->capacity - 1)) {
         if (!same_pair(cs->first[k], cs->second[k], first, second)) continue;
-        contact_history_copy(h, cs->history + k * cs->history_size, cs->history_size, cs->antisymmetric,
+        dem_contact_history_copy(h, cs->history + k * cs->history_size, cs->history_size, cs->antisymmetric,
                              cs->first[k] != first);
         return 1;
     }
     return 0;
 }
 
-void contacts_gather(const dem_system *s, contact_store *cs)
+void dem_contacts_gather(const dem_system *s, contact_store *cs)
 {
-    contact_store_clear(cs);
+    dem_contact_store_clear(cs);
     const int hs = s->history_size;
     if (hs == 0) return;
     const neighbour_list *nl = &s->nlist;
     const int64_t *id = s->p.id;
     for (int i = 0; i < nl->rows; i++)
         for (int k = nl->start[i]; k < nl->start[i + 1]; k++)
-            if (nl->touching[k]) contact_store_put(cs, id[i], id[nl->partner[k]], nl->history + (size_t)k * hs);
+            if (nl->touching[k]) dem_contact_store_put(cs, id[i], id[nl->partner[k]], nl->history + (size_t)k * hs);
     for (int w = 0; w < s->nwalls; w++) {
         const wall_contacts *wc = &s->wall_lists[w];
         for (int m = 0; m < wc->n; m++)
             if (wc->touching[m])
-                contact_store_put(cs, contact_wall_key(w), id[wc->particle[m]], wc->history + (size_t)m * hs);
+                dem_contact_store_put(cs, contact_wall_key(w), id[wc->particle[m]], wc->history + (size_t)m * hs);
     }
 }
 
-long contacts_scatter(dem_system *s, const contact_store *cs)
+long dem_contacts_scatter(dem_system *s, const contact_store *cs)
 {
     const int hs = s->history_size;
     if (hs == 0 || cs->count == 0) return 0;
@@ -110,14 +110,14 @@ long contacts_scatter(dem_system *s, const contact_store *cs)
     long found = 0;
     for (int i = 0; i < nl->rows; i++)
         for (int k = nl->start[i]; k < nl->start[i + 1]; k++)
-            if (contact_store_take(cs, id[i], id[nl->partner[k]], nl->history + (size_t)k * hs)) {
+            if (dem_contact_store_take(cs, id[i], id[nl->partner[k]], nl->history + (size_t)k * hs)) {
                 nl->touching[k] = 1;   /* the force loop clears it if the contact is over */
                 found++;
             }
     for (int w = 0; w < s->nwalls; w++) {
         wall_contacts *wc = &s->wall_lists[w];
         for (int m = 0; m < wc->n; m++)
-            if (contact_store_take(cs, contact_wall_key(w), id[wc->particle[m]], wc->history + (size_t)m * hs)) {
+            if (dem_contact_store_take(cs, contact_wall_key(w), id[wc->particle[m]], wc->history + (size_t)m * hs)) {
                 wc->touching[m] = 1;
                 found++;
             }
@@ -125,7 +125,7 @@ long contacts_scatter(dem_system *s, const contact_store *cs)
     return found;
 }
 
-void contacts_to_state(const contact_store *store, int nwalls, contact_state *state)
+void dem_contacts_to_state(const contact_store *store, int nwalls, contact_state *state)
 {
     const int hs = store->history_size;
     memset(state, 0, sizeof *state);
@@ -142,10 +142,10 @@ void contacts_to_state(const contact_store *store, int nwalls, contact_state *st
     }
 }
 
-void contacts_from_state(const contact_state *state, contact_store *store)
+void dem_contacts_from_state(const contact_state *state, contact_store *store)
 {
-    contact_store_clear(store);
+    dem_contact_store_clear(store);
     for (long c = 0; c < state->count; c++)
-        contact_store_put(store, state->keys[2 * c], state->keys[2 * c + 1],
+        dem_contact_store_put(store, state->keys[2 * c], state->keys[2 * c + 1],
                           state->history + c * state->history_size);
 }

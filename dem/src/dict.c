@@ -6,7 +6,7 @@
  * dictionaries whose entries are either a sub-dictionary or the raw value tokens up to
  * the ';'. Values are interpreted only when an accessor asks for them, because only
  * then is the expected type known. Accessors remember the keys they were asked for so
- * that dict_check_unused() can suggest the intended key for a typo. */
+ * that dem_dict_check_unused() can suggest the intended key for a typo. */
 #include <ctype.h>
 #include <errno.h>
 #include <math.h>
@@ -317,7 +317,7 @@ static void entry_clear(entry *e)
 {
     free(e->key);
     free(e->file);
-    dict_free(e->sub);
+    dem_dict_free(e->sub);
     for (int i = 0; i < e->ntok; i++) free(e->tok[i].text);
     free(e->tok);
     memset(e, 0, sizeof *e);
@@ -507,7 +507,7 @@ static void parse_body(lexer *lx, dict *d, int depth, int braced)
     }
 }
 
-dict *dict_read(const char *path)
+dict *dem_dict_read(const char *path)
 {
     const char *why = NULL;
     char *buf = read_file(path, &why);
@@ -520,7 +520,7 @@ dict *dict_read(const char *path)
     return d;
 }
 
-void dict_free(dict *d)
+void dem_dict_free(dict *d)
 {
     if (!d) return;
     for (int i = 0; i < d->n; i++) entry_clear(&d->ent[i]);
@@ -534,11 +534,11 @@ void dict_free(dict *d)
 
 /* ------------------------------------------------------------------ info and iteration */
 
-const char *dict_path(const dict *d) { return d->file; }
-const char *dict_name(const dict *d) { return d->name; }
-int dict_line(const dict *d) { return d->line; }
+const char *dem_dict_path(const dict *d) { return d->file; }
+const char *dem_dict_name(const dict *d) { return d->name; }
+int dem_dict_line(const dict *d) { return d->line; }
 
-int dict_key_line(const dict *d, const char *key)
+int dem_dict_key_line(const dict *d, const char *key)
 {
     const entry *e = find(d, key);
     return e ? e->line : d->line;
@@ -579,34 +579,34 @@ static entry *require(const dict *d, const char *key)
     const char *near = nearest(key, keys, d->n);
     if (near)
         fatal_at(d->file, d->line, key, "required entry missing in '%s' (found '%s' on line %d: a typo?)", scope,
-                 near, dict_key_line(d, near));
+                 near, dem_dict_key_line(d, near));
     fatal_at(d->file, d->line, key, "required entry missing in '%s'", scope);
 }
 
-int dict_has(const dict *d, const char *key)
+int dem_dict_has(const dict *d, const char *key)
 {
     /* Presence checks count as asking (for suggestions) but not as reading. */
     record(d, key);
     return find(d, key) != NULL;
 }
 
-int dict_size(const dict *d) { return d->n; }
+int dem_dict_size(const dict *d) { return d->n; }
 
-const char *dict_key_at(const dict *d, int i)
+const char *dem_dict_key_at(const dict *d, int i)
 {
-    if (i < 0 || i >= d->n) dict_fatal_here(d, "internal: entry index %d out of range [0, %d)", i, d->n);
+    if (i < 0 || i >= d->n) dem_dict_fatal_here(d, "internal: entry index %d out of range [0, %d)", i, d->n);
     return d->ent[i].key;
 }
 
-int dict_is_dict_at(const dict *d, int i)
+int dem_dict_is_dict_at(const dict *d, int i)
 {
-    if (i < 0 || i >= d->n) dict_fatal_here(d, "internal: entry index %d out of range [0, %d)", i, d->n);
+    if (i < 0 || i >= d->n) dem_dict_fatal_here(d, "internal: entry index %d out of range [0, %d)", i, d->n);
     return d->ent[i].sub != NULL;
 }
 
-dict *dict_dict_at(const dict *d, int i)
+dict *dem_dict_dict_at(const dict *d, int i)
 {
-    if (i < 0 || i >= d->n) dict_fatal_here(d, "internal: entry index %d out of range [0, %d)", i, d->n);
+    if (i < 0 || i >= d->n) dem_dict_fatal_here(d, "internal: entry index %d out of range [0, %d)", i, d->n);
     entry *e = &d->ent[i];
     record(d, e->key);
     e->used = 1;
@@ -614,14 +614,14 @@ dict *dict_dict_at(const dict *d, int i)
     return e->sub;
 }
 
-dict *dict_sub(const dict *d, const char *key)
+dict *dem_dict_sub(const dict *d, const char *key)
 {
     entry *e = require(d, key);
     if (!e->sub) fatal_at(e->file, e->line, key, "expected a sub-dictionary { ... }");
     return e->sub;
 }
 
-dict *dict_sub_opt(const dict *d, const char *key)
+dict *dem_dict_sub_opt(const dict *d, const char *key)
 {
     entry *e = lookup(d, key);
     if (!e) return NULL;
@@ -706,12 +706,12 @@ static double scalar_of(const entry *e, double lo, double hi)
     return v;
 }
 
-double dict_scalar(const dict *d, const char *key, double lo, double hi)
+double dem_dict_scalar(const dict *d, const char *key, double lo, double hi)
 {
     return scalar_of(require(d, key), lo, hi);
 }
 
-double dict_scalar_opt(const dict *d, const char *key, double def, double lo, double hi)
+double dem_dict_scalar_opt(const dict *d, const char *key, double def, double lo, double hi)
 {
     entry *e = lookup(d, key);
     return e ? scalar_of(e, lo, hi) : def;
@@ -729,12 +729,12 @@ static long label_of(const entry *e, long lo, long hi)
     return l;
 }
 
-long dict_label(const dict *d, const char *key, long lo, long hi)
+long dem_dict_label(const dict *d, const char *key, long lo, long hi)
 {
     return label_of(require(d, key), lo, hi);
 }
 
-long dict_label_opt(const dict *d, const char *key, long def, long lo, long hi)
+long dem_dict_label_opt(const dict *d, const char *key, long def, long lo, long hi)
 {
     entry *e = lookup(d, key);
     return e ? label_of(e, lo, hi) : def;
@@ -752,7 +752,7 @@ static int switch_value(const token *t)
     return -1;
 }
 
-int dict_bool_opt(const dict *d, const char *key, int def)
+int dem_dict_bool_opt(const dict *d, const char *key, int def)
 {
     entry *e = lookup(d, key);
     if (!e) return def;
@@ -837,14 +837,14 @@ static void read_vec3(cursor *c, double out[3])
     if (n != 3) fatal_at(e->file, line, e->key, "wrong vector length: expected 3 numbers (x y z), got %d", n);
 }
 
-void dict_vector(const dict *d, const char *key, double out[3])
+void dem_dict_vector(const dict *d, const char *key, double out[3])
 {
     cursor c = { require(d, key), 0 };
     read_vec3(&c, out);
     value_end(&c);
 }
 
-void dict_vector_opt(const dict *d, const char *key, double out[3], const double def[3])
+void dem_dict_vector_opt(const dict *d, const char *key, double out[3], const double def[3])
 {
     entry *e = lookup(d, key);
     if (!e) {
@@ -856,7 +856,7 @@ void dict_vector_opt(const dict *d, const char *key, double out[3], const double
     value_end(&c);
 }
 
-int dict_scalar_or_vector(const dict *d, const char *key, double lo, double hi, double out[3])
+int dem_dict_scalar_or_vector(const dict *d, const char *key, double lo, double hi, double out[3])
 {
     entry *e = require(d, key);
     if (!e->sub && e->ntok == 1) {
@@ -877,7 +877,7 @@ int dict_scalar_or_vector(const dict *d, const char *key, double lo, double hi, 
     return 3;
 }
 
-void dict_bools3_opt(const dict *d, const char *key, int out[3], int def)
+void dem_dict_bools3_opt(const dict *d, const char *key, int out[3], int def)
 {
     entry *e = lookup(d, key);
     if (!e) {
@@ -906,7 +906,7 @@ void dict_bools3_opt(const dict *d, const char *key, int out[3], int def)
     value_end(&c);
 }
 
-int dict_scalar_list(const dict *d, const char *key, double **out)
+int dem_dict_scalar_list(const dict *d, const char *key, double **out)
 {
     cursor c = { require(d, key), 0 };
     const entry *e = c.e;
@@ -927,7 +927,7 @@ int dict_scalar_list(const dict *d, const char *key, double **out)
     return n;
 }
 
-int dict_vector_list(const dict *d, const char *key, double **out)
+int dem_dict_vector_list(const dict *d, const char *key, double **out)
 {
     cursor c = { require(d, key), 0 };
     const entry *e = c.e;
@@ -959,9 +959,9 @@ static const char *word_of(const entry *e)
     return t->text;
 }
 
-const char *dict_word(const dict *d, const char *key) { return word_of(require(d, key)); }
+const char *dem_dict_word(const dict *d, const char *key) { return word_of(require(d, key)); }
 
-const char *dict_word_opt(const dict *d, const char *key, const char *def)
+const char *dem_dict_word_opt(const dict *d, const char *key, const char *def)
 {
     entry *e = lookup(d, key);
     return e ? word_of(e) : def;
@@ -984,12 +984,12 @@ static int choice_of(const entry *e, const char *const options[])
     fatal_at(e->file, e->line, e->key, "unknown option '%s'; valid options: %s", w, list);
 }
 
-int dict_choice(const dict *d, const char *key, const char *const options[])
+int dem_dict_choice(const dict *d, const char *key, const char *const options[])
 {
     return choice_of(require(d, key), options);
 }
 
-int dict_choice_opt(const dict *d, const char *key, const char *const options[], int def)
+int dem_dict_choice_opt(const dict *d, const char *key, const char *const options[], int def)
 {
     entry *e = lookup(d, key);
     return e ? choice_of(e, options) : def;
@@ -997,12 +997,12 @@ int dict_choice_opt(const dict *d, const char *key, const char *const options[],
 
 /* ------------------------------------------------------------------ checks and errors */
 
-void dict_check_unused(const dict *d)
+void dem_dict_check_unused(const dict *d)
 {
     for (int i = 0; i < d->n; i++) {
         const entry *e = &d->ent[i];
         if (e->used) {
-            if (e->sub) dict_check_unused(e->sub);
+            if (e->sub) dem_dict_check_unused(e->sub);
             continue;
         }
         char scope[256];
@@ -1014,7 +1014,7 @@ void dict_check_unused(const dict *d)
     }
 }
 
-void dict_fatal(const dict *d, const char *key, const char *fmt, ...)
+void dem_dict_fatal(const dict *d, const char *key, const char *fmt, ...)
 {
     const entry *e = find(d, key);
     va_list ap;
@@ -1022,7 +1022,7 @@ void dict_fatal(const dict *d, const char *key, const char *fmt, ...)
     vfatal_at(e ? e->file : d->file, e ? e->line : d->line, key, fmt, ap);
 }
 
-void dict_fatal_here(const dict *d, const char *fmt, ...)
+void dem_dict_fatal_here(const dict *d, const char *fmt, ...)
 {
     char scope[256], msg[1024];
     va_list ap;

@@ -5,7 +5,7 @@
 #include "error.h"
 #include "system.h"
 
-void ghosts_free(ghost_list *g)
+void dem_ghosts_free(ghost_list *g)
 {
     free(g->owner);
     free(g->shift);
@@ -22,17 +22,17 @@ static void add_image(dem_system *s, int src, int d, double shift)
         g->owner = dem_realloc(g->owner, (size_t)g->capacity * sizeof *g->owner);
         g->shift = dem_realloc(g->shift, (size_t)g->capacity * sizeof *g->shift);
     }
-    if (p->n + g->n >= p->capacity) particles_reserve(p, 2 * (p->n + g->n) + 1024);
+    if (p->n + g->n >= p->capacity) dem_particles_reserve(p, 2 * (p->n + g->n) + 1024);
     const int k = g->n++, dst = p->n + k;
     const int from_ghost = src >= p->n;
     g->owner[k] = from_ghost ? g->owner[src - p->n] : src;
     for (int q = 0; q < 3; q++) g->shift[k][q] = from_ghost ? g->shift[src - p->n][q] : 0.0;
     g->shift[k][d] += shift;
-    particles_copy(p, src, dst);
+    dem_particles_copy(p, src, dst);
     p->x[dst][d] += shift;
 }
 
-void ghosts_build(dem_system *s, double cutoff)
+void dem_ghosts_build(dem_system *s, double cutoff)
 {
     const particles *p = &s->p;
     s->ghosts.n = 0;
@@ -47,7 +47,7 @@ void ghosts_build(dem_system *s, double cutoff)
     }
 }
 
-void ghosts_update(dem_system *s)
+void dem_ghosts_update(dem_system *s)
 {
     particles *p = &s->p;
     const ghost_list *g = &s->ghosts;
@@ -63,7 +63,7 @@ void ghosts_update(dem_system *s)
     }
 }
 
-void ghosts_fold_forces(dem_system *s)
+void dem_ghosts_fold_forces(dem_system *s)
 {
     particles *p = &s->p;
     const ghost_list *g = &s->ghosts;

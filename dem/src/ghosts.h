@@ -21,13 +21,13 @@ typedef struct ghost_list {
 } ghost_list;
 
 struct dem_system;
-void ghosts_free(ghost_list *g);
+void dem_ghosts_free(ghost_list *g);
 /* Make the images of the particles within cutoff [m] of a periodic side (after the real
  * particles were wrapped into the box). */
-void ghosts_build(struct dem_system *s, double cutoff);
+void dem_ghosts_build(struct dem_system *s, double cutoff);
 /* The ghosts' positions, velocities and angular velocities from their owners; forces zeroed. */
-void ghosts_update(struct dem_system *s);
+void dem_ghosts_update(struct dem_system *s);
 /* Add the ghosts' forces and torques onto their owners. */
-void ghosts_fold_forces(struct dem_system *s);
+void dem_ghosts_fold_forces(struct dem_system *s);
 
 #endif

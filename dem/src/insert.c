@@ -12,7 +12,7 @@
 #include "rng.h"
 #include "system.h"
 
-double insertion_max_diameter(const insertion *ins)
+double dem_insertion_max_diameter(const insertion *ins)
 {
     switch (ins->dist) {
     case SIZE_CONSTANT: return ins->d_value;
@@ -27,7 +27,7 @@ double insertion_max_diameter(const insertion *ins)
     return 0.0;
 }
 
-double insertion_draw_diameter(const insertion *ins, rng *r)
+double dem_insertion_draw_diameter(const insertion *ins, rng *r)
 {
     switch (ins->dist) {
     case SIZE_CONSTANT: return ins->d_value;
@@ -162,15 +162,15 @@ static int overlaps(const dem_system *s, const grid *g, const double x[3], doubl
         if (symmetry_distance(&s->symmetry_planes[k], x) < 0.0) return 1;
     for (int k = 0; k < s->nwalls; k++) {
         double gap, en[3];
-        if (wall_gap(&s->walls[k], x, radius, &gap, en) && gap < 0.0) return 1;
+        if (dem_wall_gap(&s->walls[k], x, radius, &gap, en) && gap < 0.0) return 1;
     }
     return 0;
 }
 
-long insertion_run(dem_system *s, const insertion *ins)
+long dem_insertion_run(dem_system *s, const insertion *ins)
 {
     particles *p = &s->p;
-    double dmax = insertion_max_diameter(ins);
+    double dmax = dem_insertion_max_diameter(ins);
     for (int i = 0; i < p->n; i++) dmax = fmax(dmax, 2.0 * p->radius[i]);
     grid g;
     const long target = ins->number > 0 ? ins->number : -1;
@@ -186,7 +186,7 @@ long insertion_run(dem_system *s, const insertion *ins)
     const double density = s->materials.mat[ins->material].density;
     long placed = 0;
     double volume = 0.0;
-    const double dmax_ins = insertion_max_diameter(ins);
+    const double dmax_ins = dem_insertion_max_diameter(ins);
     const double region_extent_ok = ins->region == REGION_BOX
         ? fmin(fmin(ins->max[0] - ins->min[0], ins->max[1] - ins->min[1]), ins->max[2] - ins->min[2])
         : fmin(2.0 * ins->radius, ins->max[ins->axis] - ins->min[ins->axis]);
@@ -195,7 +195,7 @@ long insertion_run(dem_system *s, const insertion *ins)
                   "diameter %g m", ins->name, region_extent_ok, dmax_ins);
 
     while (target > 0 ? placed < target : volume < target_volume) {
-        const double radius = 0.5 * insertion_draw_diameter(ins, &r);
+        const double radius = 0.5 * dem_insertion_draw_diameter(ins, &r);
         double x[3];
         int ok = 0;
         for (int attempt = 0; attempt < ins->max_attempts && !ok; attempt++) {
@@ -212,7 +212,7 @@ long insertion_run(dem_system *s, const insertion *ins)
             capacity *= 2;
             g.next = dem_realloc(g.next, (size_t)capacity * sizeof(int));
         }
-        const int i = particles_add(p, x, ins->velocity, radius, density, ins->material, s->next_id++);
+        const int i = dem_particles_add(p, x, ins->velocity, radius, density, ins->material, s->next_id++);
         grid_add(&g, p, i);
         placed++;
         volume += 4.0 / 3.0 * M_PI * radius * radius * radius;
@@ -224,15 +224,15 @@ long insertion_run(dem_system *s, const insertion *ins)
 
 /* ------------------------------------------------------------------ given particles */
 
-void insert_batch_init(insert_batch *b) { memset(b, 0, sizeof *b); }
+void dem_insert_batch_init(insert_batch *b) { memset(b, 0, sizeof *b); }
 
-void insert_batch_free(insert_batch *b)
+void dem_insert_batch_free(insert_batch *b)
 {
     free(b->x); free(b->v); free(b->diameter); free(b->material); free(b->line);
     memset(b, 0, sizeof *b);
 }
 
-long insert_batch_push(insert_batch *b, const double x[3], const double v[3], double diameter, int material, int line)
+long dem_insert_batch_push(insert_batch *b, const double x[3], const double v[3], double diameter, int material, int line)
 {
     if (b->n == b->capacity) {
         b->capacity = b->capacity ? 2 * b->capacity : 1024;
@@ -274,11 +274,11 @@ static void batch_fatal(const batch_where *w, long i, const char *fmt, ...)
         snprintf(where, sizeof where, "%s:%d", w->file, w->b->line[i]);
         dem_fatal_at(where, "particle at (%.10g %.10g %.10g) m: %s", x[0], x[1], x[2], msg);
     }
-    dict_fatal(w->entry, w->key, "insertion '%s': point %ld at (%.10g %.10g %.10g) m: %s", w->ins->name, i + 1,
+    dem_dict_fatal(w->entry, w->key, "insertion '%s': point %ld at (%.10g %.10g %.10g) m: %s", w->ins->name, i + 1,
                x[0], x[1], x[2], msg);
 }
 
-long insertion_add_batch(dem_system *s, const insertion *ins, const insert_batch *b,
+long dem_insertion_add_batch(dem_system *s, const insertion *ins, const insert_batch *b,
                          const char *file, const dict *entry, const char *key)
 {
     particles *p = &s->p;
@@ -307,7 +307,7 @@ long insertion_add_batch(dem_system *s, const insertion *ins, const insert_batch
         }
         for (int k = 0; k < s->nwalls; k++) {
             double gap, en[3];
-            if (wall_gap(&s->walls[k], x, r, &gap, en) && gap < -1e-9 * r)
+            if (dem_wall_gap(&s->walls[k], x, r, &gap, en) && gap < -1e-9 * r)
                 batch_fatal(&w, i, "the particle (diameter %g m) overlaps wall '%s' by %g m", b->diameter[i],
                             s->walls[k].name, -gap);
         }
@@ -325,7 +325,7 @@ long insertion_add_batch(dem_system *s, const insertion *ins, const insert_batch
             batch_fatal(&w, i, "overlaps point %d at (%g %g %g) m (centre distance %g m < sum of radii %g m)",
                         j - n0 + 1, y[0], y[1], y[2], dist, r + p->radius[j]);
         }
-        const int k = particles_add(p, x, b->v[i], r, s->materials.mat[b->material[i]].density, b->material[i],
+        const int k = dem_particles_add(p, x, b->v[i], r, s->materials.mat[b->material[i]].density, b->material[i],
                                     s->next_id++);
         grid_add(&g, p, k);
     }

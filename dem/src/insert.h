@@ -5,7 +5,7 @@
  *            all of them or the lowest `number` along gravity (insert_lattice.c);
  *   file     positions (and optionally diameters, velocities, materials) read from a file,
  *            whitespace columns or OpenFOAM's vectorField (insert_file.c).
- * Lattice and file particles go through insertion_add_batch(), which checks each one against
+ * Lattice and file particles go through dem_insertion_add_batch(), which checks each one against
  * the domain, the walls, the symmetry planes and every particle already placed (O(N), on a
  * grid) and stops with a message that names the offending point or file line. */
 #ifndef DEM_INSERT_H
@@ -52,35 +52,35 @@ typedef struct insert_batch {
     int *line;                      /* file line of each particle (file insertions) */
 } insert_batch;
 
-void insert_batch_init(insert_batch *b);
-void insert_batch_free(insert_batch *b);
-long insert_batch_push(insert_batch *b, const double x[3], const double v[3], double diameter, int material, int line);
+void dem_insert_batch_init(insert_batch *b);
+void dem_insert_batch_free(insert_batch *b);
+long dem_insert_batch_push(insert_batch *b, const double x[3], const double v[3], double diameter, int material, int line);
 
 struct dem_system;
 struct dict;
 /* Random insertion; fatal (naming the insertion) when the particles do not fit. Returns the count. */
-long insertion_run(struct dem_system *s, const insertion *ins);
-double insertion_max_diameter(const insertion *ins);
-double insertion_draw_diameter(const insertion *ins, rng *r);
+long dem_insertion_run(struct dem_system *s, const insertion *ins);
+double dem_insertion_max_diameter(const insertion *ins);
+double dem_insertion_draw_diameter(const insertion *ins, rng *r);
 
 /* Lattice points of the region, in order (x fastest, then y, then z), keeping the lowest
  * ins->number along ins->down when number > 0. Fatal (naming `key` of `entry`) when the
  * lattice holds fewer points. Returns the count; *xyz malloc'd, 3 doubles per point. */
-long lattice_points(const insertion *ins, const struct dict *entry, double **xyz);
+long dem_lattice_points(const insertion *ins, const struct dict *entry, double **xyz);
 /* Lattice insertion: the points, diameters drawn from the distribution (seed), checked and placed. */
-long insertion_lattice(struct dem_system *s, const insertion *ins, const struct dict *entry);
+long dem_insertion_lattice(struct dem_system *s, const insertion *ins, const struct dict *entry);
 
 /* Read a positions file into b (formats in insert_file.c); fatal with "<file>:<line>: ..." on
  * any error. Columns missing from a line take the insertion's diameter, velocity, material. */
-void insert_file_read(const struct dem_system *s, const insertion *ins, insert_batch *b);
+void dem_insert_file_read(const struct dem_system *s, const insertion *ins, insert_batch *b);
 /* File insertion: read, check and place. */
-long insertion_file(struct dem_system *s, const insertion *ins, const struct dict *entry);
+long dem_insertion_file(struct dem_system *s, const insertion *ins, const struct dict *entry);
 
 /* Check each particle of b (centre inside the domain, on the particle side of every symmetry
  * plane, no wall overlap, no overlap with any particle placed before or earlier in b: centre
  * distance >= (r_i + r_j)(1 - 1e-9)) and add it. Errors name file:line when b->line is set and
  * `file` is given, else the point and `key` of `entry`. Returns the count. */
-long insertion_add_batch(struct dem_system *s, const insertion *ins, const insert_batch *b,
+long dem_insertion_add_batch(struct dem_system *s, const insertion *ins, const insert_batch *b,
                          const char *file, const struct dict *entry, const char *key);
 
 #endif

@@ -101,7 +101,7 @@ static void push(reader *rd, int line, const double x[3], const double *v, doubl
         if (!ins->has_diameter)
             file_fatal(rd, line, "no diameter column, and insertion '%s' has no 'diameter' entry: give one of "
                        "the two", ins->name);
-        d = insertion_draw_diameter(ins, &rd->r);
+        d = dem_insertion_draw_diameter(ins, &rd->r);
     }
     if (material < 0) {
         if (ins->material < 0)
@@ -109,7 +109,7 @@ static void push(reader *rd, int line, const double x[3], const double *v, doubl
                        "the two", ins->name);
         material = ins->material;
     }
-    insert_batch_push(rd->b, x, v ? v : ins->velocity, d, material, line);
+    dem_insert_batch_push(rd->b, x, v ? v : ins->velocity, d, material, line);
 }
 
 /* ------------------------------------------------------------------ columns */
@@ -157,7 +157,7 @@ static void read_columns(reader *rd)
         if (ncol == 8) {
             char name[DEM_NAME_LEN + 1];
             snprintf(name, sizeof name, "%.*s", (int)(clen[7] < sizeof name ? clen[7] : sizeof name - 1), col[7]);
-            material = materials_find(&rd->s->materials, name);
+            material = dem_materials_find(&rd->s->materials, name);
             if (material < 0 || clen[7] >= sizeof name) {
                 char list[512];
                 size_t l = 0;
@@ -319,7 +319,7 @@ static int looks_like_vector_field(reader *rd)
     return is_p(&t, '(');
 }
 
-void insert_file_read(const dem_system *s, const insertion *ins, insert_batch *b)
+void dem_insert_file_read(const dem_system *s, const insertion *ins, insert_batch *b)
 {
     reader rd;
     memset(&rd, 0, sizeof rd);
@@ -342,12 +342,12 @@ void insert_file_read(const dem_system *s, const insertion *ins, insert_batch *b
     if (b->n == 0) file_fatal(&rd, 0, "no positions in the file");
 }
 
-long insertion_file(dem_system *s, const insertion *ins, const dict *entry)
+long dem_insertion_file(dem_system *s, const insertion *ins, const dict *entry)
 {
     insert_batch b;
-    insert_batch_init(&b);
-    insert_file_read(s, ins, &b);
-    const long placed = insertion_add_batch(s, ins, &b, ins->file, entry, "file");
-    insert_batch_free(&b);
+    dem_insert_batch_init(&b);
+    dem_insert_file_read(s, ins, &b);
+    const long placed = dem_insertion_add_batch(s, ins, &b, ins->file, entry, "file");
+    dem_insert_batch_free(&b);
     return placed;
 }

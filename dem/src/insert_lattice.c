@@ -19,7 +19,7 @@
  *
  * The spacing must be at least the largest diameter (checked when the case is read), so that
  * lattice neighbours do not overlap; diameters of a distribution are drawn per point from
- * `seed`. The points are then checked and placed by insertion_add_batch (insert.c). */
+ * `seed`. The points are then checked and placed by dem_insertion_add_batch (insert.c). */
 #include <math.h>
 #include <stdlib.h>
 
@@ -37,7 +37,7 @@ static int by_height(const void *a, const void *b)
     return (x->i > y->i) - (x->i < y->i);
 }
 
-long lattice_points(const insertion *ins, const dict *entry, double **xyz)
+long dem_lattice_points(const insertion *ins, const dict *entry, double **xyz)
 {
     double lo[3], hi[3];
     const int a = ins->axis, b = (a + 1) % 3, c = (a + 2) % 3;
@@ -52,14 +52,14 @@ long lattice_points(const insertion *ins, const dict *entry, double **xyz)
         const double len = hi[k] - lo[k];
         n[k] = (long)floor(len / ins->spacing[k] + 1e-9);
         if (n[k] < 1)
-            dict_fatal(entry, "spacing", "insertion '%s': the spacing %g m along %c exceeds the region's "
+            dem_dict_fatal(entry, "spacing", "insertion '%s': the spacing %g m along %c exceeds the region's "
                        "extent %g m: no lattice point fits", ins->name, ins->spacing[k], "xyz"[k], len);
         total *= (double)n[k];
     }
     if (total > 1e8)
-        dict_fatal(entry, "spacing", "insertion '%s': the lattice would have %.3g points (%ld x %ld x %ld), "
+        dem_dict_fatal(entry, "spacing", "insertion '%s': the lattice would have %.3g points (%ld x %ld x %ld), "
                    "more than 10^8", ins->name, total, n[0], n[1], n[2]);
-    const double dmax = insertion_max_diameter(ins);
+    const double dmax = dem_insertion_max_diameter(ins);
     double *pts = dem_malloc((size_t)(3 * total) * sizeof(double));
     long count = 0;
     for (long k2 = 0; k2 < n[2]; k2++)
@@ -76,11 +76,11 @@ long lattice_points(const insertion *ins, const dict *entry, double **xyz)
                 count++;
             }
     if (count == 0)
-        dict_fatal(entry, "spacing", "insertion '%s': no lattice point of spacing (%g %g %g) m lies inside the "
+        dem_dict_fatal(entry, "spacing", "insertion '%s': no lattice point of spacing (%g %g %g) m lies inside the "
                    "cylinder with room for diameter %g m", ins->name, ins->spacing[0], ins->spacing[1],
                    ins->spacing[2], dmax);
     if (ins->number > count)
-        dict_fatal(entry, "number", "insertion '%s': the lattice holds only %ld points (%ld x %ld x %ld%s at "
+        dem_dict_fatal(entry, "number", "insertion '%s': the lattice holds only %ld points (%ld x %ld x %ld%s at "
                    "spacing (%g %g %g) m), fewer than number %ld", ins->name, count, n[0], n[1], n[2],
                    ins->region == REGION_CYLINDER ? " box, inside the cylinder" : "", ins->spacing[0],
                    ins->spacing[1], ins->spacing[2], ins->number);
@@ -104,18 +104,18 @@ long lattice_points(const insertion *ins, const dict *entry, double **xyz)
     return count;
 }
 
-long insertion_lattice(dem_system *s, const insertion *ins, const dict *entry)
+long dem_insertion_lattice(dem_system *s, const insertion *ins, const dict *entry)
 {
     double *pts;
-    const long n = lattice_points(ins, entry, &pts);
+    const long n = dem_lattice_points(ins, entry, &pts);
     insert_batch b;
-    insert_batch_init(&b);
+    dem_insert_batch_init(&b);
     rng r;
     rng_seed(&r, ins->seed);
     for (long i = 0; i < n; i++)
-        insert_batch_push(&b, pts + 3 * i, ins->velocity, insertion_draw_diameter(ins, &r), ins->material, 0);
+        dem_insert_batch_push(&b, pts + 3 * i, ins->velocity, dem_insertion_draw_diameter(ins, &r), ins->material, 0);
     free(pts);
-    const long placed = insertion_add_batch(s, ins, &b, NULL, entry, "region");
-    insert_batch_free(&b);
+    const long placed = dem_insertion_add_batch(s, ins, &b, NULL, entry, "region");
+    dem_insert_batch_free(&b);
     return placed;
 }

@@ -34,34 +34,34 @@ typedef struct contact_state {
     int forces_read;         /* reader: p->f and p->torque hold the snapshot's forces */
 } contact_state;
 
-void contact_state_free(contact_state *cs);
+void dem_contact_state_free(contact_state *cs);
 
 /* base: path without extension, e.g. "case/particles". append != 0 keeps existing snapshots
  * (restart); otherwise the files are created anew. Fatal on HDF5 errors, with the path. */
-particle_writer *io_open_writer(const char *base, int append);
-void io_write_snapshot(particle_writer *w, const particles *p, double time, long step);
+particle_writer *dem_io_open_writer(const char *base, int append);
+void dem_io_write_snapshot(particle_writer *w, const particles *p, double time, long step);
 /* The same, with the contact history (cs may be NULL). */
-void io_write_snapshot_contacts(particle_writer *w, const particles *p, double time, long step,
+void dem_io_write_snapshot_contacts(particle_writer *w, const particles *p, double time, long step,
                                 const contact_state *cs);
-void io_close_writer(particle_writer *w);
+void dem_io_close_writer(particle_writer *w);
 
 /* Read the last complete snapshot of <base>.h5 into p (p is reset and refilled: the PF_RESTART
  * fields from the snapshot, the others 0; masses are left for the caller to set from the
  * materials). Returns 0 on success, -1 when the file has no complete snapshot; fatal when the
  * file cannot be read. */
-int io_read_last_snapshot(const char *base, particles *p, double *time, long *step);
+int dem_io_read_last_snapshot(const char *base, particles *p, double *time, long *step);
 /* The same, also filling cs with the snapshot's contact history (empty when it has none);
  * cs->forces_read = 1 when the snapshot had p->f and p->torque (restart fields): the restarted
  * run then continues without evaluating the contacts a second time at that step. */
-int io_read_last_snapshot_contacts(const char *base, particles *p, double *time, long *step,
+int dem_io_read_last_snapshot_contacts(const char *base, particles *p, double *time, long *step,
                                    contact_state *cs);
 
 /* The snapshot at at_time (the last complete one within tolerance of it; NAN: the last). Returns
- * -1 when there is none; otherwise as io_read_last_snapshot_contacts (cs may be NULL). */
-int io_read_snapshot_at(const char *base, double at_time, double tolerance, particles *p, double *time,
+ * -1 when there is none; otherwise as dem_io_read_last_snapshot_contacts (cs may be NULL). */
+int dem_io_read_snapshot_at(const char *base, double at_time, double tolerance, particles *p, double *time,
                         long *step, contact_state *cs);
 /* Remove the complete snapshots later than after_time (a run continued from an earlier time
  * rewrites them, as OpenFOAM rewrites later time directories). Returns how many. */
-int io_drop_snapshots_after(const char *base, double after_time);
+int dem_io_drop_snapshots_after(const char *base, double after_time);
 
 #endif

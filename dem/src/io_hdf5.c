@@ -308,11 +308,11 @@ static void write_xdmf(const particle_writer *w)
                    "\" NodesPerElement=\"1\"/>\n",
                 s->n);
         fputs("    <Geometry GeometryType=\"XYZ\">\n", f);
-        xdmf_item(f, w, group, &particle_fields[PF_FIELD_x], s->n);
+        xdmf_item(f, w, group, &dem_particle_fields[PF_FIELD_x], s->n);
         fputs("    </Geometry>\n", f);
         for (int k = 0; k < PARTICLE_FIELD_COUNT; k++)
-            if (k != PF_FIELD_x && (particle_fields[k].flags & PF_WRITE))
-                xdmf_attribute(f, w, group, &particle_fields[k], s->n);
+            if (k != PF_FIELD_x && (dem_particle_fields[k].flags & PF_WRITE))
+                xdmf_attribute(f, w, group, &dem_particle_fields[k], s->n);
         fputs("   </Grid>\n", f);
     }
     fputs("  </Grid>\n </Domain>\n</Xdmf>\n", f);
@@ -333,7 +333,7 @@ static hid_t create_file(const char *path)
     return file;
 }
 
-particle_writer *io_open_writer(const char *base, int append)
+particle_writer *dem_io_open_writer(const char *base, int append)
 {
     h5_quiet();
     particle_writer *w = dem_calloc(1, sizeof *w);
@@ -416,7 +416,7 @@ static void write_field(hid_t group, const particle_field *pf, const particles *
     H5Sclose(space);
 }
 
-void contact_state_free(contact_state *cs)
+void dem_contact_state_free(contact_state *cs)
 {
     free(cs->keys);
     free(cs->history);
@@ -457,12 +457,12 @@ static void write_contacts(hid_t g, const contact_state *cs, const char *path)
     H5Gclose(c);
 }
 
-void io_write_snapshot(particle_writer *w, const particles *p, double time, long step)
+void dem_io_write_snapshot(particle_writer *w, const particles *p, double time, long step)
 {
-    io_write_snapshot_contacts(w, p, time, step, NULL);
+    dem_io_write_snapshot_contacts(w, p, time, step, NULL);
 }
 
-void io_write_snapshot_contacts(particle_writer *w, const particles *p, double time, long step,
+void dem_io_write_snapshot_contacts(particle_writer *w, const particles *p, double time, long step,
                                 const contact_state *cs)
 {
     const char *path = w->h5_path;
@@ -476,7 +476,7 @@ void io_write_snapshot_contacts(particle_writer *w, const particles *p, double t
 
     const int64_t n = p->n;
     for (int k = 0; k < PARTICLE_FIELD_COUNT; k++)
-        if (particle_fields[k].flags & (PF_WRITE | PF_RESTART)) write_field(g, &particle_fields[k], p, n, path);
+        if (dem_particle_fields[k].flags & (PF_WRITE | PF_RESTART)) write_field(g, &dem_particle_fields[k], p, n, path);
     if (cs && cs->history_size > 0) write_contacts(g, cs, path);
 
     const long long step_ll = step;
@@ -501,7 +501,7 @@ void io_write_snapshot_contacts(particle_writer *w, const particles *p, double t
     write_xdmf(w);
 }
 
-void io_close_writer(particle_writer *w)
+void dem_io_close_writer(particle_writer *w)
 {
     if (!w) return;
     if (w->file >= 0) chk(H5Fclose(w->file), w->h5_path, "cannot close file");
@@ -550,7 +550,7 @@ static void read_restart_fields(hid_t g, particles *p, int64_t n, const char *gr
                                 int found[PARTICLE_FIELD_COUNT])
 {
     for (int k = 0; k < PARTICLE_FIELD_COUNT; k++) {
-        const particle_field *pf = &particle_fields[k];
+        const particle_field *pf = &dem_particle_fields[k];
         found[k] = 0;
         if (pf->flags & PF_RESTART) {
             found[k] = read_field(g, pf, p, n, path);
@@ -607,18 +607,18 @@ static void read_contacts(hid_t g, contact_state *cs, const char *path)
     H5Gclose(c);
 }
 
-int io_read_last_snapshot(const char *base, particles *p, double *time, long *step)
+int dem_io_read_last_snapshot(const char *base, particles *p, double *time, long *step)
 {
-    return io_read_last_snapshot_contacts(base, p, time, step, NULL);
+    return dem_io_read_last_snapshot_contacts(base, p, time, step, NULL);
 }
 
-int io_read_last_snapshot_contacts(const char *base, particles *p, double *time, long *step,
+int dem_io_read_last_snapshot_contacts(const char *base, particles *p, double *time, long *step,
                                    contact_state *cs)
 {
-    return io_read_snapshot_at(base, NAN, 0.0, p, time, step, cs);
+    return dem_io_read_snapshot_at(base, NAN, 0.0, p, time, step, cs);
 }
 
-int io_read_snapshot_at(const char *base, double at_time, double tolerance, particles *p, double *time,
+int dem_io_read_snapshot_at(const char *base, double at_time, double tolerance, particles *p, double *time,
                         long *step, contact_state *cs)
 {
     h5_quiet();
@@ -656,7 +656,7 @@ int io_read_snapshot_at(const char *base, double at_time, double tolerance, part
     snprintf(name, sizeof name, "snapshots/%06ld", last.index);
     hid_t g = chk(H5Gopen2(file, name, H5P_DEFAULT), path, "cannot open snapshot group");
     const int n = (int)last.n;
-    particles_reserve(p, n);
+    dem_particles_reserve(p, n);
     p->n = n;
     int found[PARTICLE_FIELD_COUNT];
     read_restart_fields(g, p, n, name, path, found);
@@ -672,7 +672,7 @@ int io_read_snapshot_at(const char *base, double at_time, double tolerance, part
     return 0;
 }
 
-int io_drop_snapshots_after(const char *base, double after_time)
+int dem_io_drop_snapshots_after(const char *base, double after_time)
 {
     h5_quiet();
     char *path = str_cat(base, ".h5");

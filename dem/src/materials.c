@@ -3,14 +3,14 @@
 
 #include "materials.h"
 
-int materials_find(const material_table *t, const char *name)
+int dem_materials_find(const material_table *t, const char *name)
 {
     for (int i = 0; i < t->ntypes; i++)
         if (strcmp(t->mat[i].name, name) == 0) return i;
     return -1;
 }
 
-void materials_set_model_values(material_table *t, int ti, int tj, enum contact_slot slot,
+void dem_materials_set_model_values(material_table *t, int ti, int tj, enum contact_slot slot,
                                 const void *values, size_t bytes)
 {
     double v[MODEL_VALUES] = {0};
@@ -19,7 +19,7 @@ void materials_set_model_values(material_table *t, int ti, int tj, enum contact_
     memcpy(t->pair[tj * DEM_MAX_TYPES + ti].model[slot], v, sizeof v);
 }
 
-void materials_set_pair(material_table *t, int ti, int tj, double restitution, double friction)
+void dem_materials_set_pair(material_table *t, int ti, int tj, double restitution, double friction)
 {
     const material *a = &t->mat[ti], *b = &t->mat[tj];
     pair_coeffs c = {0};

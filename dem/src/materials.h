@@ -39,12 +39,12 @@ typedef struct material_table {
     pair_coeffs pair[DEM_MAX_TYPES * DEM_MAX_TYPES];  /* [ti * DEM_MAX_TYPES + tj] */
 } material_table;
 
-int materials_find(const material_table *t, const char *name);   /* -1 if absent */
+int dem_materials_find(const material_table *t, const char *name);   /* -1 if absent */
 /* Fill pair[ti][tj] and pair[tj][ti] from the two materials, e and mu. */
-void materials_set_pair(material_table *t, int ti, int tj, double restitution, double friction);
-/* A slot's model values for the pair (both orders; after materials_set_pair): bytes of a
+void dem_materials_set_pair(material_table *t, int ti, int tj, double restitution, double friction);
+/* A slot's model values for the pair (both orders; after dem_materials_set_pair): bytes of a
  * model's *_params struct. */
-void materials_set_model_values(material_table *t, int ti, int tj, enum contact_slot slot,
+void dem_materials_set_model_values(material_table *t, int ti, int tj, enum contact_slot slot,
                                 const void *values, size_t bytes);
 
 static inline const pair_coeffs *materials_pair(const material_table *t, int ti, int tj)

@@ -7,7 +7,7 @@
 #include "neighbour.h"
 #include "system.h"
 
-void neighbour_init(neighbour_list *nl, double skin, int sort_interval, int history_size)
+void dem_neighbour_init(neighbour_list *nl, double skin, int sort_interval, int history_size)
 {
     memset(nl, 0, sizeof *nl);
     nl->skin = skin;
@@ -15,7 +15,7 @@ void neighbour_init(neighbour_list *nl, double skin, int sort_interval, int hist
     nl->history_size = history_size;
 }
 
-void neighbour_free(neighbour_list *nl)
+void dem_neighbour_free(neighbour_list *nl)
 {
     free(nl->start); free(nl->partner); free(nl->history); free(nl->touching); free(nl->x_at_build);
     free(nl->cell_start); free(nl->cell_of); free(nl->cell_order);
@@ -110,7 +110,7 @@ static void sort_by_cell(dem_system *s)
     const int n = s->p.n;
     int *order = dem_malloc((size_t)(n ? n : 1) * sizeof(int));
     memcpy(order, s->nlist.cell_order, (size_t)n * sizeof(int));
-    particles_permute(&s->p, order);
+    dem_particles_permute(&s->p, order);
     free(order);
 }
 
@@ -123,7 +123,7 @@ static void push_pair(neighbour_list *nl, int j)
     nl->partner[nl->npairs++] = j;
 }
 
-void neighbour_rebuild(dem_system *s)
+void dem_neighbour_rebuild(dem_system *s)
 {
     neighbour_list *nl = &s->nlist;
     particles *p = &s->p;
@@ -139,7 +139,7 @@ void neighbour_rebuild(dem_system *s)
         sort_by_cell(s);
         nl->sorts++;
     }
-    ghosts_build(s, cutoff);
+    dem_ghosts_build(s, cutoff);
     const int total = p->n + s->ghosts.n;
     bin_particles(s, total, cutoff);
 

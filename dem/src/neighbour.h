@@ -2,7 +2,7 @@
  * particles, a real one; the other may be a periodic image, ghosts.h), with its contact history
  * beside it; contacts.c carries the history across rebuilds and sorts by particle ids.
  * The list is rebuilt only when some particle has moved more than half the skin since the
- * last build (system_step measures that while it moves the particles). Every sortInterval-th rebuild first re-orders the particles by cell, so that
+ * last build (dem_system_step measures that while it moves the particles). Every sortInterval-th rebuild first re-orders the particles by cell, so that
  * neighbours are near each other in memory. */
 #ifndef DEM_NEIGHBOUR_H
 #define DEM_NEIGHBOUR_H
@@ -34,10 +34,10 @@ typedef struct neighbour_list {
 } neighbour_list;
 
 struct dem_system;
-void neighbour_init(neighbour_list *nl, double skin, int sort_interval, int history_size);
-void neighbour_free(neighbour_list *nl);
+void dem_neighbour_init(neighbour_list *nl, double skin, int sort_interval, int history_size);
+void dem_neighbour_free(neighbour_list *nl);
 /* Rebuild: wrap the particles into the box, sort them by cell when due, make the periodic
  * images, build the list; every pair's history starts at zero. */
-void neighbour_rebuild(struct dem_system *s);
+void dem_neighbour_rebuild(struct dem_system *s);
 
 #endif

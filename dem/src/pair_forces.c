@@ -135,7 +135,7 @@ static void pair_generic(dem_system *s)
 #define PAIR_ENTRY(N, T, C, R, S) pair_##N##_##T##_##C##_##R##_##S,
 static void (*const kernels[])(dem_system *) = {SPECIALISED_KERNELS(PAIR_ENTRY)};
 
-void pair_forces_add(dem_system *s)
+void dem_pair_forces_add(dem_system *s)
 {
     const int q = s->generic_kernels ? -1 : contact_specialised(&s->models);
     if (q >= 0) kernels[q](s);

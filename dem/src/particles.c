@@ -8,23 +8,23 @@
 #define PF_DESCRIPTOR(member, element, unit, dataset, flags)                                     \
     {#member, dataset, unit, offsetof(particles, member), sizeof(PF_CTYPE_##element),            \
      PF_COMPONENTS_##element, PF_SCALAR_##element, flags},
-const particle_field particle_fields[PARTICLE_FIELD_COUNT] = {PARTICLE_FIELDS(PF_DESCRIPTOR)};
+const particle_field dem_particle_fields[PARTICLE_FIELD_COUNT] = {PARTICLE_FIELDS(PF_DESCRIPTOR)};
 #undef PF_DESCRIPTOR
 
-void particles_init(particles *p)
+void dem_particles_init(particles *p)
 {
     memset(p, 0, sizeof *p);
 }
 
-void particles_free(particles *p)
+void dem_particles_free(particles *p)
 {
 #define PF_FREE(member, element, unit, dataset, flags) free(p->member);
     PARTICLE_FIELDS(PF_FREE)
 #undef PF_FREE
-    particles_init(p);
+    dem_particles_init(p);
 }
 
-void particles_reserve(particles *p, int capacity)
+void dem_particles_reserve(particles *p, int capacity)
 {
     if (capacity <= p->capacity) return;
 #define PF_GROW(member, element, unit, dataset, flags)                                           \
@@ -34,7 +34,7 @@ void particles_reserve(particles *p, int capacity)
     p->capacity = capacity;
 }
 
-void particles_set_mass(particles *p, int i, double density)
+void dem_particles_set_mass(particles *p, int i, double density)
 {
     const double r = p->radius[i];
     const double m = density * 4.0 / 3.0 * M_PI * r * r * r;
@@ -46,7 +46,7 @@ void particles_set_mass(particles *p, int i, double density)
 /* A new particle at index n (grown if needed), all fields 0. */
 static int append_zeroed(particles *p)
 {
-    if (p->n == p->capacity) particles_reserve(p, p->capacity ? 2 * p->capacity : 1024);
+    if (p->n == p->capacity) dem_particles_reserve(p, p->capacity ? 2 * p->capacity : 1024);
     const int i = p->n++;
 #define PF_ZERO(member, element, unit, dataset, flags) memset(&p->member[i], 0, sizeof *p->member);
     PARTICLE_FIELDS(PF_ZERO)
@@ -54,7 +54,7 @@ static int append_zeroed(particles *p)
     return i;
 }
 
-int particles_add(particles *p, const double x[3], const double v[3], double radius,
+int dem_particles_add(particles *p, const double x[3], const double v[3], double radius,
                   double density, int type, int64_t id)
 {
     const int i = append_zeroed(p);
@@ -65,18 +65,18 @@ int particles_add(particles *p, const double x[3], const double v[3], double rad
     p->radius[i] = radius;
     p->type[i] = type;
     p->id[i] = id;
-    particles_set_mass(p, i, density);
+    dem_particles_set_mass(p, i, density);
     return i;
 }
 
 /* Each field gathered through `order` into scratch and copied back; the element size is a
  * constant in each expansion, so the copies compile to moves. */
-void particles_permute(particles *p, const int *order)
+void dem_particles_permute(particles *p, const int *order)
 {
     const int n = p->n;
     size_t largest = 1;
     for (int k = 0; k < PARTICLE_FIELD_COUNT; k++)
-        if (particle_fields[k].element_size > largest) largest = particle_fields[k].element_size;
+        if (dem_particle_fields[k].element_size > largest) largest = dem_particle_fields[k].element_size;
     char *scratch = dem_malloc((size_t)(n ? n : 1) * largest);
 #define PF_PERMUTE(member, element, unit, dataset, flags)                                        \
     {                                                                                            \
@@ -89,7 +89,7 @@ void particles_permute(particles *p, const int *order)
     free(scratch);
 }
 
-void particles_copy(particles *p, int from, int to)
+void dem_particles_copy(particles *p, int from, int to)
 {
     if (from == to) return;
 #define PF_COPY(member, element, unit, dataset, flags)                                           \
@@ -98,19 +98,19 @@ void particles_copy(particles *p, int from, int to)
 #undef PF_COPY
 }
 
-size_t particles_pack_size(void)
+size_t dem_particles_pack_size(void)
 {
     size_t bytes = 0;
     for (int k = 0; k < PARTICLE_FIELD_COUNT; k++)
-        if (particle_fields[k].flags & PF_MIGRATE) bytes += particle_fields[k].element_size;
+        if (dem_particle_fields[k].flags & PF_MIGRATE) bytes += dem_particle_fields[k].element_size;
     return bytes;
 }
 
-size_t particles_pack(const particles *p, int i, void *buf)
+size_t dem_particles_pack(const particles *p, int i, void *buf)
 {
     char *out = buf;
     for (int k = 0; k < PARTICLE_FIELD_COUNT; k++) {
-        const particle_field *f = &particle_fields[k];
+        const particle_field *f = &dem_particle_fields[k];
         if (!(f->flags & PF_MIGRATE)) continue;
         memcpy(out, (const char *)particle_field_data(p, f) + (size_t)i * f->element_size, f->element_size);
         out += f->element_size;
@@ -118,12 +118,12 @@ size_t particles_pack(const particles *p, int i, void *buf)
     return (size_t)(out - (char *)buf);
 }
 
-int particles_unpack(particles *p, const void *buf)
+int dem_particles_unpack(particles *p, const void *buf)
 {
     const int i = append_zeroed(p);
     const char *in = buf;
     for (int k = 0; k < PARTICLE_FIELD_COUNT; k++) {
-        const particle_field *f = &particle_fields[k];
+        const particle_field *f = &dem_particle_fields[k];
         if (!(f->flags & PF_MIGRATE)) continue;
         memcpy((char *)particle_field_data(p, f) + (size_t)i * f->element_size, in, f->element_size);
         in += f->element_size;

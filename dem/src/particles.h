@@ -29,7 +29,7 @@ enum { PF_WRITE = 1, PF_RESTART = 2, PF_MIGRATE = 4 };
  *     step's contact history; evaluating them again on restart would add the last tangential
  *     increment twice (restart.c). They migrate: the next step's first half kick uses them.
  *   - mass and the inverses follow from radius and the material's density: recomputed on
- *     restart (restart_read), moved along on migration (cheaper than looking up the material).
+ *     restart (dem_restart_read), moved along on migration (cheaper than looking up the material).
  *   - The coupling's fields (coupling/src/coupling.c) are no restart fields: beta, u_fluid and
  *     f_fluid are evaluated again from the fluid field at the start of every fluid step, before
  *     any DEM step uses them, and a snapshot is written only between fluid steps. fluid_cell is
@@ -85,7 +85,7 @@ typedef struct particles {
 #undef PF_MEMBER
 } particles;
 
-/* Index of each field in particle_fields[]: PF_FIELD_x, PF_FIELD_v, ... */
+/* Index of each field in dem_particle_fields[]: PF_FIELD_x, PF_FIELD_v, ... */
 enum particle_field_index {
 #define PF_INDEX(member, element, unit, dataset, flags) PF_FIELD_##member,
     PARTICLE_FIELDS(PF_INDEX)
@@ -105,7 +105,7 @@ typedef struct particle_field {
     unsigned flags;              /* PF_WRITE, PF_RESTART, PF_MIGRATE */
 } particle_field;
 
-extern const particle_field particle_fields[PARTICLE_FIELD_COUNT];
+extern const particle_field dem_particle_fields[PARTICLE_FIELD_COUNT];
 
 /* The array of field f in p (the member at f->offset). Read as bytes: the member is a typed
  * pointer, and reading it through a void * lvalue would break the aliasing rules. */
@@ -116,24 +116,24 @@ static inline void *particle_field_data(const particles *p, const particle_field
     return data;
 }
 
-void particles_init(particles *p);
-void particles_free(particles *p);
-void particles_reserve(particles *p, int capacity);
+void dem_particles_init(particles *p);
+void dem_particles_free(particles *p);
+void dem_particles_reserve(particles *p, int capacity);
 /* Append one particle at rest, every other field 0; returns its index. density in kg/m^3. */
-int particles_add(particles *p, const double x[3], const double v[3], double radius,
+int dem_particles_add(particles *p, const double x[3], const double v[3], double radius,
                   double density, int type, int64_t id);
 /* Recompute mass, inverse mass and inverse inertia from radius and a per-type density. */
-void particles_set_mass(particles *p, int i, double density);
+void dem_particles_set_mass(particles *p, int i, double density);
 /* Reorder all arrays so that new index k holds old index order[k]. */
-void particles_permute(particles *p, const int *order);
+void dem_particles_permute(particles *p, const int *order);
 /* Every field of particle `from` copied onto particle `to` (both within the capacity; the
  * periodic images beyond n are made this way). */
-void particles_copy(particles *p, int from, int to);
-/* Bytes of one particle's PF_MIGRATE fields, as particles_pack writes them. */
-size_t particles_pack_size(void);
-/* Particle i's PF_MIGRATE fields into buf (particles_pack_size() bytes); returns the bytes. */
-size_t particles_pack(const particles *p, int i, void *buf);
-/* Append a particle from particles_pack's bytes, its other fields 0; returns its index. */
-int particles_unpack(particles *p, const void *buf);
+void dem_particles_copy(particles *p, int from, int to);
+/* Bytes of one particle's PF_MIGRATE fields, as dem_particles_pack writes them. */
+size_t dem_particles_pack_size(void);
+/* Particle i's PF_MIGRATE fields into buf (dem_particles_pack_size() bytes); returns the bytes. */
+size_t dem_particles_pack(const particles *p, int i, void *buf);
+/* Append a particle from dem_particles_pack's bytes, its other fields 0; returns its index. */
+int dem_particles_unpack(particles *p, const void *buf);
 
 #endif

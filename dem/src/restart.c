@@ -6,46 +6,46 @@
 #include "error.h"
 #include "restart.h"
 
-void restart_save_contacts(const dem_system *s, contact_state *cs)
+void dem_restart_save_contacts(const dem_system *s, contact_state *cs)
 {
     contact_store store;
-    contact_store_init(&store, s->history_size, s->nlist.history_antisymmetric);
-    contacts_gather(s, &store);
-    contacts_to_state(&store, s->nwalls, cs);
-    contact_store_free(&store);
+    dem_contact_store_init(&store, s->history_size, s->nlist.history_antisymmetric);
+    dem_contacts_gather(s, &store);
+    dem_contacts_to_state(&store, s->nwalls, cs);
+    dem_contact_store_free(&store);
 }
 
-void restart_setup(dem_system *s, const contact_state *cs)
+void dem_restart_setup(dem_system *s, const contact_state *cs)
 {
-    const int matches = cs && cs->history_size == contact_history_size(&s->models) && cs->nwalls == s->nwalls;
+    const int matches = cs && cs->history_size == dem_contact_history_size(&s->models) && cs->nwalls == s->nwalls;
     if (cs && cs->history_size > 0 && !matches)
         dem_warning("the restart snapshot's contact history (%d values per contact, %d walls) does not "
                     "fit this case's models and walls; contacts start afresh", cs->history_size, cs->nwalls);
     if (!matches || cs->history_size == 0) {
-        system_setup(s);
+        dem_system_setup(s);
         return;
     }
     contact_store saved;
-    contact_store_init(&saved, cs->history_size, contact_history_antisymmetric(&s->models));
-    contacts_from_state(cs, &saved);
+    dem_contact_store_init(&saved, cs->history_size, dem_contact_history_antisymmetric(&s->models));
+    dem_contacts_from_state(cs, &saved);
     /* the snapshot's forces were computed in the step that wrote it (with the half-step
      * velocity, and adding that step's tangential increment); computing them again here would
      * add the increment twice */
-    const long restored = system_setup_with_contacts(s, &saved, !cs->forces_read);
+    const long restored = dem_system_setup_with_contacts(s, &saved, !cs->forces_read);
     dem_info("restart: contact history of %ld of %ld contacts restored", restored, cs->count);
-    contact_store_free(&saved);
+    dem_contact_store_free(&saved);
 }
 
-int restart_read(dem_system *s, const char *base, double at_time, double tolerance, contact_state *cs)
+int dem_restart_read(dem_system *s, const char *base, double at_time, double tolerance, contact_state *cs)
 {
     long step;
-    if (io_read_snapshot_at(base, at_time, tolerance, &s->p, &s->time, &step, cs) != 0) return -1;
+    if (dem_io_read_snapshot_at(base, at_time, tolerance, &s->p, &s->time, &step, cs) != 0) return -1;
     s->step = step;
     for (int i = 0; i < s->p.n; i++) {
         if (s->p.type[i] < 0 || s->p.type[i] >= s->materials.ntypes)
             dem_fatal("%s.h5: particle id %lld has type %d, but the case defines %d materials",
                       base, (long long)s->p.id[i], s->p.type[i], s->materials.ntypes);
-        particles_set_mass(&s->p, i, s->materials.mat[s->p.type[i]].density);
+        dem_particles_set_mass(&s->p, i, s->materials.mat[s->p.type[i]].density);
         if (s->p.id[i] >= s->next_id) s->next_id = s->p.id[i] + 1;
     }
     return 0;

@@ -28,7 +28,7 @@
  * and the tangential motion is that of the drift. A constant force (a sphere bouncing on a
  * mirror floor under gravity) is so integrated exactly. Several planes are tried in turn; a
  * crossing re-checks the others (at most four passes, enough for a corner of planes at right
- * angles or wider). Applied in system_step's drift (system.c). */
+ * angles or wider). Applied in dem_system_step's drift (system.c). */
 #ifndef DEM_SYMMETRY_H
 #define DEM_SYMMETRY_H
 
@@ -49,7 +49,7 @@ static inline double symmetry_distance(const symmetry_plane *sp, const double x[
 
 /* The bounce of one particle that crossed a plane (symmetry.c); x, v after the drift, f the
  * force of the step's first half kick. */
-void symmetry_bounce(const symmetry_plane *planes, int nplanes, double x[3], double v[3], const double f[3],
+void dem_symmetry_bounce(const symmetry_plane *planes, int nplanes, double x[3], double v[3], const double f[3],
                      double inv_mass, double dt);
 
 /* After the drift of one particle: mirror it if its centre crossed a plane. */
@@ -58,7 +58,7 @@ static inline void symmetry_apply(const symmetry_plane *planes, int nplanes, dou
 {
     for (int k = 0; k < nplanes; k++)
         if (symmetry_distance(&planes[k], x) < 0.0) {
-            symmetry_bounce(planes, nplanes, x, v, f, inv_mass, dt);
+            dem_symmetry_bounce(planes, nplanes, x, v, f, inv_mass, dt);
             return;
         }
 }

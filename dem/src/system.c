@@ -6,32 +6,32 @@
 #include "error.h"
 #include "system.h"
 
-void system_init(dem_system *s)
+void dem_system_init(dem_system *s)
 {
     memset(s, 0, sizeof *s);
-    particles_init(&s->p);
+    dem_particles_init(&s->p);
     s->models.fn_floor = -INFINITY;   /* the models: each slot's first (models.h) */
     s->max_overlap_fraction = 0.2;
-    neighbour_init(&s->nlist, 0.0, 20, 0);
+    dem_neighbour_init(&s->nlist, 0.0, 20, 0);
 }
 
-void system_free(dem_system *s)
+void dem_system_free(dem_system *s)
 {
-    particles_free(&s->p);
-    neighbour_free(&s->nlist);
-    walls_free(s);
-    ghosts_free(&s->ghosts);
-    contact_store_free(&s->carried);
+    dem_particles_free(&s->p);
+    dem_neighbour_free(&s->nlist);
+    dem_walls_free(s);
+    dem_ghosts_free(&s->ghosts);
+    dem_contact_store_free(&s->carried);
     memset(s, 0, sizeof *s);
 }
 
 /* A new neighbour list and wall lists, the contacts' history carried across by particle ids. */
 static void rebuild(dem_system *s)
 {
-    contacts_gather(s, &s->carried);
-    neighbour_rebuild(s);
-    walls_build_candidates(s);
-    contacts_scatter(s, &s->carried);
+    dem_contacts_gather(s, &s->carried);
+    dem_neighbour_rebuild(s);
+    dem_walls_build_candidates(s);
+    dem_contacts_scatter(s, &s->carried);
 }
 
 /* Each chosen model's derived constants per material pair, and the reach of the normal model
@@ -58,13 +58,13 @@ static void prepare_models(dem_system *s)
     s->nlist.reach = s->contact_reach;
 }
 
-long system_setup_with_contacts(dem_system *s, const contact_store *saved, int compute_forces)
+long dem_system_setup_with_contacts(dem_system *s, const contact_store *saved, int compute_forces)
 {
-    s->history_size = contact_history_size(&s->models);
+    s->history_size = dem_contact_history_size(&s->models);
     s->nlist.history_size = s->history_size;
-    s->nlist.history_antisymmetric = contact_history_antisymmetric(&s->models);
-    contact_store_free(&s->carried);
-    contact_store_init(&s->carried, s->history_size, s->nlist.history_antisymmetric);
+    s->nlist.history_antisymmetric = dem_contact_history_antisymmetric(&s->models);
+    dem_contact_store_free(&s->carried);
+    dem_contact_store_init(&s->carried, s->history_size, s->nlist.history_antisymmetric);
     for (int d = 0; d < 3; d++) {
         s->period[d] = s->periodic[d] ? s->domain_max[d] - s->domain_min[d] : 0.0;
         s->inv_period[d] = s->periodic[d] ? 1.0 / s->period[d] : 0.0;
@@ -75,28 +75,28 @@ long system_setup_with_contacts(dem_system *s, const contact_store *saved, int c
         s->nlist.skin = s->p.n ? 0.2 * rmin : 1e-3;   /* 10 % of the smallest diameter */
     }
     prepare_models(s);
-    neighbour_rebuild(s);
-    walls_build_candidates(s);
-    const long found = saved ? contacts_scatter(s, saved) : 0;
-    if (compute_forces) system_compute_forces(s);
+    dem_neighbour_rebuild(s);
+    dem_walls_build_candidates(s);
+    const long found = saved ? dem_contacts_scatter(s, saved) : 0;
+    if (compute_forces) dem_system_compute_forces(s);
     return found;
 }
 
-void system_setup(dem_system *s)
+void dem_system_setup(dem_system *s)
 {
-    system_setup_with_contacts(s, NULL, 1);
+    dem_system_setup_with_contacts(s, NULL, 1);
 }
 
 static void add_contact_forces(dem_system *s)
 {
     s->max_overlap_seen = 0.0;
-    ghosts_update(s);
-    pair_forces_add(s);
-    ghosts_fold_forces(s);
-    walls_add_forces(s);
+    dem_ghosts_update(s);
+    dem_pair_forces_add(s);
+    dem_ghosts_fold_forces(s);
+    dem_walls_add_forces(s);
 }
 
-void system_compute_forces(dem_system *s)
+void dem_system_compute_forces(dem_system *s)
 {
     particles *p = &s->p;
     for (int i = 0; i < p->n; i++) {
@@ -172,7 +172,7 @@ static int kick_drift_reset(dem_system *s)
     return moved_far;
 }
 
-void system_step(dem_system *s)
+void dem_system_step(dem_system *s)
 {
     particles *p = &s->p;
     if (kick_drift_reset(s)) rebuild(s);
@@ -180,10 +180,10 @@ void system_step(dem_system *s)
     half_kick(p, s->dt);
     s->time += s->dt;
     s->step++;
-    if (s->max_overlap_seen > s->max_overlap_fraction || s->step % 256 == 0) system_check_health(s);
+    if (s->max_overlap_seen > s->max_overlap_fraction || s->step % 256 == 0) dem_system_check_health(s);
 }
 
-void system_check_health(const dem_system *s)
+void dem_system_check_health(const dem_system *s)
 {
     const particles *p = &s->p;
     for (int i = 0; i < p->n; i++) {
@@ -202,7 +202,7 @@ void system_check_health(const dem_system *s)
                   s->time, s->step, s->max_overlap_seen, s->max_overlap_fraction);
 }
 
-double system_kinetic_energy(const dem_system *s)
+double dem_system_kinetic_energy(const dem_system *s)
 {
     const particles *p = &s->p;
     double e = 0.0;

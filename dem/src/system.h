@@ -25,7 +25,7 @@ typedef struct dem_system {
     double inv_period[3];             /* 1/period, 0 in non-periodic directions */
 
     int nwalls, wall_capacity;
-    wall *walls;                      /* walls_add() appends */
+    wall *walls;                      /* dem_walls_add() appends */
     wall_contacts *wall_lists;        /* per wall: the particles near it and their contact history */
     int nsymmetry;                    /* symmetry planes: mirrors without force (symmetry.h) */
     symmetry_plane symmetry_planes[DEM_MAX_SYMMETRY_PLANES];
@@ -44,30 +44,30 @@ typedef struct dem_system {
     int64_t next_id;
 } dem_system;
 
-void system_init(dem_system *s);
-void system_free(dem_system *s);
+void dem_system_init(dem_system *s);
+void dem_system_free(dem_system *s);
 /* After particles, materials, models, walls are set: allocate histories, build the list,
  * compute the first forces. */
-void system_setup(dem_system *s);
+void dem_system_setup(dem_system *s);
 /* The same, with the contact history of a store (contacts.h) put back onto the new lists, and
  * the first forces only if compute_forces (a restart keeps its snapshot's); returns how many
  * contacts were found. */
-long system_setup_with_contacts(dem_system *s, const contact_store *saved, int compute_forces);
+long dem_system_setup_with_contacts(dem_system *s, const contact_store *saved, int compute_forces);
 /* One velocity-Verlet step. */
-void system_step(dem_system *s);
+void dem_system_step(dem_system *s);
 /* Forces for the current positions (pairs, walls, gravity, external). */
-void system_compute_forces(dem_system *s);
+void dem_system_compute_forces(dem_system *s);
 /* Stop with a message if a position or velocity is not finite or an overlap is too large. */
-void system_check_health(const dem_system *s);
+void dem_system_check_health(const dem_system *s);
 /* Kinetic energy (translational + rotational) [J]. */
-double system_kinetic_energy(const dem_system *s);
+double dem_system_kinetic_energy(const dem_system *s);
 
 /* Pair forces (pair_forces.c). */
-void pair_forces_add(dem_system *s);
+void dem_pair_forces_add(dem_system *s);
 /* The descriptor of the model chosen for a slot. */
 static inline const contact_model *system_model(const dem_system *s, enum contact_slot slot)
 {
-    return contact_model_get(slot, contact_model_id(&s->models, slot));
+    return dem_contact_model_get(slot, contact_model_id(&s->models, slot));
 }
 
 #endif

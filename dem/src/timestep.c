@@ -18,7 +18,7 @@ static double contact_time(const dem_system *s, const pair_coeffs *c, double r_e
     return system_model(s, SLOT_NORMAL)->contact_time(c, &s->models, r_eff, m_eff, v);
 }
 
-timestep_limits timestep_limits_compute(const dem_system *s, double max_velocity)
+timestep_limits dem_timestep_limits_compute(const dem_system *s, double max_velocity)
 {
     const particles *p = &s->p;
     const int nt = s->materials.ntypes;
@@ -60,10 +60,10 @@ timestep_limits timestep_limits_compute(const dem_system *s, double max_velocity
     return lim;
 }
 
-void timestep_check(const dem_system *s, double max_velocity, int override, const char *source)
+void dem_timestep_check(const dem_system *s, double max_velocity, int override, const char *source)
 {
     if (s->p.n == 0) return;
-    const timestep_limits lim = timestep_limits_compute(s, max_velocity);
+    const timestep_limits lim = dem_timestep_limits_compute(s, max_velocity);
     const double fr = s->dt / lim.rayleigh_time, fc = s->dt / lim.contact_time;
     dem_info("time step %g s: %.3f of the Rayleigh time %.3g s (%s; limit %.2f), "
              "%.3f of the %s contact time %.3g s at %g m/s (%s; limit %.2f)",

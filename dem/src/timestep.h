@@ -16,9 +16,9 @@ typedef struct timestep_limits {
     const char *rayleigh_material, *contact_pair;
 } timestep_limits;
 
-timestep_limits timestep_limits_compute(const struct dem_system *s, double max_velocity);
+timestep_limits dem_timestep_limits_compute(const struct dem_system *s, double max_velocity);
 /* Print the fractions; stop with the largest safe step if dt is too large (unless override,
  * which prints a loud warning instead). source names the file for the message. */
-void timestep_check(const struct dem_system *s, double max_velocity, int override, const char *source);
+void dem_timestep_check(const struct dem_system *s, double max_velocity, int override, const char *source);
 
 #endif

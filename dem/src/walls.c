@@ -8,7 +8,7 @@
 #include "error.h"
 #include "system.h"
 
-int wall_gap(const wall *w, const double x[3], double radius, double *gap, double en[3])
+int dem_wall_gap(const wall *w, const double x[3], double radius, double *gap, double en[3])
 {
     if (w->kind == WALL_PLANE) {
         const double dist = (x[0] - w->point[0]) * w->normal[0] + (x[1] - w->point[1]) * w->normal[1] +
@@ -42,7 +42,7 @@ int wall_gap(const wall *w, const double x[3], double radius, double *gap, doubl
     return 1;
 }
 
-wall *walls_add(dem_system *s)
+wall *dem_walls_add(dem_system *s)
 {
     if (s->nwalls == s->wall_capacity) {
         s->wall_capacity = s->wall_capacity ? 2 * s->wall_capacity : 8;
@@ -54,7 +54,7 @@ wall *walls_add(dem_system *s)
     return &s->walls[s->nwalls++];
 }
 
-void walls_free(dem_system *s)
+void dem_walls_free(dem_system *s)
 {
     for (int k = 0; k < s->nwalls; k++) {
         free(s->wall_lists[k].particle);
@@ -69,7 +69,7 @@ void walls_free(dem_system *s)
 }
 
 /* Refresh the candidate lists (called after each neighbour-list build): real particles only. */
-void walls_build_candidates(dem_system *s)
+void dem_walls_build_candidates(dem_system *s)
 {
     const particles *p = &s->p;
     const int hs = s->history_size;
@@ -91,7 +91,7 @@ void walls_build_candidates(dem_system *s)
         wc->n = 0;
         for (int i = 0; i < p->n; i++) {
             double gap, en[3];
-            if (!wall_gap(&probe, p->x[i], p->radius[i], &gap, en) || gap >= range) continue;
+            if (!dem_wall_gap(&probe, p->x[i], p->radius[i], &gap, en) || gap >= range) continue;
             if (wc->n == wc->capacity) {
                 wc->capacity = wc->capacity ? 2 * wc->capacity : 256;
                 wc->particle = dem_realloc(wc->particle, (size_t)wc->capacity * sizeof(int));
@@ -128,7 +128,7 @@ static ALWAYS_INLINE void wall_loop(dem_system *s, const int normal, const int t
             double *h = wc->history + (size_t)m * hs;
             contact k = {.dt = dt, .step = step};
             double gap;
-            if (!wall_gap(wl, p->x[i], p->radius[i], &gap, k.en) || gap >= reach) {
+            if (!dem_wall_gap(wl, p->x[i], p->radius[i], &gap, k.en) || gap >= reach) {
                 for (int c = 0; c < hs; c++) h[c] = 0.0;
                 wc->touching[m] = 0;
                 continue;
@@ -188,7 +188,7 @@ static void wall_generic(dem_system *s)
 #define WALL_ENTRY(N, T, C, R, S) wall_##N##_##T##_##C##_##R##_##S,
 static void (*const kernels[])(dem_system *) = {SPECIALISED_KERNELS(WALL_ENTRY)};
 
-void walls_add_forces(dem_system *s)
+void dem_walls_add_forces(dem_system *s)
 {
     const int q = s->generic_kernels ? -1 : contact_specialised(&s->models);
     if (q >= 0) kernels[q](s);

@@ -34,15 +34,15 @@ typedef struct wall_contacts {
 
 struct dem_system;
 /* Append a wall (its fields zeroed) to the system; there is no limit on their number. */
-wall *walls_add(struct dem_system *s);
-void walls_free(struct dem_system *s);
+wall *dem_walls_add(struct dem_system *s);
+void dem_walls_free(struct dem_system *s);
 /* Add wall forces to p->f / p->torque (kernel chosen once per model combination). */
-void walls_add_forces(struct dem_system *s);
+void dem_walls_add_forces(struct dem_system *s);
 /* Refresh each wall's list of particles within radius + skin (after a neighbour build); the
  * histories start at zero (contacts.c puts back those of continuing contacts). */
-void walls_build_candidates(struct dem_system *s);
+void dem_walls_build_candidates(struct dem_system *s);
 /* Signed gap from a sphere surface to the wall (negative: overlap) and the unit normal from the
  * wall to the centre; returns 0 if the wall does not act at this position (outside bounds). */
-int wall_gap(const wall *w, const double x[3], double radius, double *gap, double en[3]);
+int dem_wall_gap(const wall *w, const double x[3], double radius, double *gap, double en[3]);
 
 #endif

@@ -47,96 +47,96 @@ static void read_schema(const char *path)
     double v[3], *list;
     int b3[3];
 
-    dict *d = dict_read(path);
-    dict_scalar(d, "timeStep", 1e-12, 1);
-    dict_scalar_opt(d, "endTime", 0, 0, HUGE_VAL);
-    dict_scalar_opt(d, "writeInterval", 0, 0, HUGE_VAL);
-    dict_vector_opt(d, "gravity", v, zero);
-    dict_scalar_opt(d, "skin", 1e-3, 0, 1);
-    dict_label_opt(d, "sortInterval", 20, 0, 1000000);
-    dict_scalar_opt(d, "maxExpectedVelocity", 1, 0, HUGE_VAL);
-    dict_bool_opt(d, "timeStepOverride", 0);
-    dict_scalar_opt(d, "maxOverlapFraction", 0.2, 0, 1);
-    dict_scalar_opt(d, "progressInterval", 5, 0, HUGE_VAL);
-    if (dict_has(d, "probePoints")) free((dict_vector_list(d, "probePoints", &list), list));
+    dict *d = dem_dict_read(path);
+    dem_dict_scalar(d, "timeStep", 1e-12, 1);
+    dem_dict_scalar_opt(d, "endTime", 0, 0, HUGE_VAL);
+    dem_dict_scalar_opt(d, "writeInterval", 0, 0, HUGE_VAL);
+    dem_dict_vector_opt(d, "gravity", v, zero);
+    dem_dict_scalar_opt(d, "skin", 1e-3, 0, 1);
+    dem_dict_label_opt(d, "sortInterval", 20, 0, 1000000);
+    dem_dict_scalar_opt(d, "maxExpectedVelocity", 1, 0, HUGE_VAL);
+    dem_dict_bool_opt(d, "timeStepOverride", 0);
+    dem_dict_scalar_opt(d, "maxOverlapFraction", 0.2, 0, 1);
+    dem_dict_scalar_opt(d, "progressInterval", 5, 0, HUGE_VAL);
+    if (dem_dict_has(d, "probePoints")) free((dem_dict_vector_list(d, "probePoints", &list), list));
 
-    dict *dom = dict_sub_opt(d, "domain");
+    dict *dom = dem_dict_sub_opt(d, "domain");
     if (dom) {
-        dict_vector(dom, "min", v);
-        dict_vector(dom, "max", v);
-        dict_bools3_opt(dom, "periodic", b3, 0);
+        dem_dict_vector(dom, "min", v);
+        dem_dict_vector(dom, "max", v);
+        dem_dict_bools3_opt(dom, "periodic", b3, 0);
     }
-    dict *mat = dict_sub_opt(d, "materials");
-    for (int i = 0; mat && i < dict_size(mat); i++) {
-        dict *m = dict_dict_at(mat, i);
-        dict_scalar(m, "youngsModulus", 1, 1e15);
-        dict_scalar(m, "poissonsRatio", 0, 0.5);
-        dict_scalar(m, "density", 1, 1e5);
+    dict *mat = dem_dict_sub_opt(d, "materials");
+    for (int i = 0; mat && i < dem_dict_size(mat); i++) {
+        dict *m = dem_dict_dict_at(mat, i);
+        dem_dict_scalar(m, "youngsModulus", 1, 1e15);
+        dem_dict_scalar(m, "poissonsRatio", 0, 0.5);
+        dem_dict_scalar(m, "density", 1, 1e5);
     }
-    dict *cm = dict_sub_opt(d, "contactModels");
+    dict *cm = dem_dict_sub_opt(d, "contactModels");
     if (cm) {
-        dict_choice(cm, "normal", normal_opts);
-        dict_choice_opt(cm, "tangential", tangential_opts, 1);
-        dict_choice_opt(cm, "cohesion", none_opts, 0);
-        dict_choice_opt(cm, "rolling", none_opts, 0);
-        dict_choice_opt(cm, "surface", surface_opts, 0);
-        dict_scalar_opt(cm, "characteristicVelocity", 1, 0, HUGE_VAL);
+        dem_dict_choice(cm, "normal", normal_opts);
+        dem_dict_choice_opt(cm, "tangential", tangential_opts, 1);
+        dem_dict_choice_opt(cm, "cohesion", none_opts, 0);
+        dem_dict_choice_opt(cm, "rolling", none_opts, 0);
+        dem_dict_choice_opt(cm, "surface", surface_opts, 0);
+        dem_dict_scalar_opt(cm, "characteristicVelocity", 1, 0, HUGE_VAL);
     }
-    dict *ia = dict_sub_opt(d, "interactions");
-    for (int i = 0; ia && i < dict_size(ia); i++) {
-        dict *p = dict_dict_at(ia, i);
-        dict_scalar(p, "restitution", 0, 1);
-        dict_scalar(p, "friction", 0, 10);
+    dict *ia = dem_dict_sub_opt(d, "interactions");
+    for (int i = 0; ia && i < dem_dict_size(ia); i++) {
+        dict *p = dem_dict_dict_at(ia, i);
+        dem_dict_scalar(p, "restitution", 0, 1);
+        dem_dict_scalar(p, "friction", 0, 10);
     }
-    dict *walls = dict_sub_opt(d, "walls");
-    for (int i = 0; walls && i < dict_size(walls); i++) {
-        dict *w = dict_dict_at(walls, i);
-        int type = dict_choice(w, "type", wall_types);
-        dict_word(w, "material");
+    dict *walls = dem_dict_sub_opt(d, "walls");
+    for (int i = 0; walls && i < dem_dict_size(walls); i++) {
+        dict *w = dem_dict_dict_at(walls, i);
+        int type = dem_dict_choice(w, "type", wall_types);
+        dem_dict_word(w, "material");
         if (type == 0) {
-            dict_vector(w, "point", v);
-            dict_vector(w, "normal", v);
-            dict_vector_opt(w, "boundsMin", v, zero);
-            dict_vector_opt(w, "boundsMax", v, zero);
+            dem_dict_vector(w, "point", v);
+            dem_dict_vector(w, "normal", v);
+            dem_dict_vector_opt(w, "boundsMin", v, zero);
+            dem_dict_vector_opt(w, "boundsMax", v, zero);
         } else if (type == 1) {
-            dict_vector(w, "min", v);
-            dict_vector(w, "max", v);
+            dem_dict_vector(w, "min", v);
+            dem_dict_vector(w, "max", v);
         } else {
-            dict_choice(w, "axis", axes);
-            if (dict_scalar_list(w, "centre", &list) != 2) dict_fatal(w, "centre", "expected 2 numbers");
+            dem_dict_choice(w, "axis", axes);
+            if (dem_dict_scalar_list(w, "centre", &list) != 2) dem_dict_fatal(w, "centre", "expected 2 numbers");
             free(list);
-            dict_scalar(w, "radius", 0, HUGE_VAL);
-            dict_choice(w, "side", sides);
-            dict_scalar_opt(w, "zMin", 0, -HUGE_VAL, HUGE_VAL);
-            dict_scalar_opt(w, "zMax", 0, -HUGE_VAL, HUGE_VAL);
+            dem_dict_scalar(w, "radius", 0, HUGE_VAL);
+            dem_dict_choice(w, "side", sides);
+            dem_dict_scalar_opt(w, "zMin", 0, -HUGE_VAL, HUGE_VAL);
+            dem_dict_scalar_opt(w, "zMax", 0, -HUGE_VAL, HUGE_VAL);
         }
     }
-    dict *ins = dict_sub_opt(d, "insertion");
-    for (int i = 0; ins && i < dict_size(ins); i++) {
-        dict *f = dict_dict_at(ins, i);
-        dict *r = dict_sub(f, "region");
-        if (dict_choice(r, "type", regions) == 0) {
-            dict_vector(r, "min", v);
-            dict_vector(r, "max", v);
+    dict *ins = dem_dict_sub_opt(d, "insertion");
+    for (int i = 0; ins && i < dem_dict_size(ins); i++) {
+        dict *f = dem_dict_dict_at(ins, i);
+        dict *r = dem_dict_sub(f, "region");
+        if (dem_dict_choice(r, "type", regions) == 0) {
+            dem_dict_vector(r, "min", v);
+            dem_dict_vector(r, "max", v);
         }
-        if (dict_has(f, "number"))
-            dict_label(f, "number", 1, 100000000);
+        if (dem_dict_has(f, "number"))
+            dem_dict_label(f, "number", 1, 100000000);
         else
-            dict_scalar(f, "solidFraction", 0, 1);
-        dict_word(f, "material");
-        dict_vector_opt(f, "velocity", v, zero);
-        dict *dia = dict_sub(f, "diameter");
-        int dist = dict_choice(dia, "distribution", dists);
-        if (dist == 0) dict_scalar(dia, "value", 0, 1);
+            dem_dict_scalar(f, "solidFraction", 0, 1);
+        dem_dict_word(f, "material");
+        dem_dict_vector_opt(f, "velocity", v, zero);
+        dict *dia = dem_dict_sub(f, "diameter");
+        int dist = dem_dict_choice(dia, "distribution", dists);
+        if (dist == 0) dem_dict_scalar(dia, "value", 0, 1);
         if (dist == 3) {
-            free((dict_scalar_list(dia, "values", &list), list));
-            free((dict_scalar_list(dia, "weights", &list), list));
+            free((dem_dict_scalar_list(dia, "values", &list), list));
+            free((dem_dict_scalar_list(dia, "weights", &list), list));
         }
-        dict_label_opt(f, "seed", 1, 0, 2147483647);
-        dict_label_opt(f, "maxAttempts", 200, 1, 1000000);
+        dem_dict_label_opt(f, "seed", 1, 0, 2147483647);
+        dem_dict_label_opt(f, "maxAttempts", 200, 1, 1000000);
     }
-    dict_check_unused(d);
-    dict_free(d);
+    dem_dict_check_unused(d);
+    dem_dict_free(d);
 }
 
 /* ------------------------------------------------------------------ unit checks */
@@ -193,123 +193,123 @@ static void test_values(void)
 {
     char path[512];
     snprintf(path, sizeof path, "%s/demProperties", tmpdir);
-    dict *d = dict_read(path);
+    dict *d = dem_dict_read(path);
     const double zero[3] = { 0, 0, 0 }, one[3] = { 1, 1, 1 };
     double v[3], *list;
     int b[3];
 
-    CHECK(strcmp(dict_name(d), "demProperties") == 0);
-    CHECK(strcmp(dict_path(d), path) == 0);
-    CHECK(dict_line(d) == 1);
+    CHECK(strcmp(dem_dict_name(d), "demProperties") == 0);
+    CHECK(strcmp(dem_dict_path(d), path) == 0);
+    CHECK(dem_dict_line(d) == 1);
 
     /* scalars and labels */
-    CHECK_NEAR(dict_scalar(d, "timeStep", 0, 1), 1e-5);
-    CHECK_NEAR(dict_scalar(d, "endTime", 0, 1), 0.2);
-    CHECK_NEAR(dict_scalar(d, "negative", -1, 0), -0.1);
-    CHECK_NEAR(dict_scalar(d, "big", 0, 1e7), 5e6);
-    CHECK_NEAR(dict_scalar(d, "plusExp", 0, HUGE_VAL), 2500);
-    CHECK_NEAR(dict_scalar(d, "count", 0, 100), 42);   /* an integer is a valid scalar */
-    CHECK_NEAR(dict_scalar_opt(d, "absent", 3.5, 0, 1), 3.5);
-    CHECK(dict_label(d, "count", 0, 100) == 42);
-    CHECK(dict_label(d, "countExp", 0, 100000) == 50000);
-    CHECK(dict_label(d, "negLabel", -10, 10) == -7);
-    CHECK(dict_label_opt(d, "absentLabel", 9, 0, 1) == 9);
-    CHECK(dict_key_line(d, "timeStep") == 4);
-    CHECK(dict_key_line(d, "endTime") == 5);
-    CHECK(dict_key_line(d, "nope") == 1);
+    CHECK_NEAR(dem_dict_scalar(d, "timeStep", 0, 1), 1e-5);
+    CHECK_NEAR(dem_dict_scalar(d, "endTime", 0, 1), 0.2);
+    CHECK_NEAR(dem_dict_scalar(d, "negative", -1, 0), -0.1);
+    CHECK_NEAR(dem_dict_scalar(d, "big", 0, 1e7), 5e6);
+    CHECK_NEAR(dem_dict_scalar(d, "plusExp", 0, HUGE_VAL), 2500);
+    CHECK_NEAR(dem_dict_scalar(d, "count", 0, 100), 42);   /* an integer is a valid scalar */
+    CHECK_NEAR(dem_dict_scalar_opt(d, "absent", 3.5, 0, 1), 3.5);
+    CHECK(dem_dict_label(d, "count", 0, 100) == 42);
+    CHECK(dem_dict_label(d, "countExp", 0, 100000) == 50000);
+    CHECK(dem_dict_label(d, "negLabel", -10, 10) == -7);
+    CHECK(dem_dict_label_opt(d, "absentLabel", 9, 0, 1) == 9);
+    CHECK(dem_dict_key_line(d, "timeStep") == 4);
+    CHECK(dem_dict_key_line(d, "endTime") == 5);
+    CHECK(dem_dict_key_line(d, "nope") == 1);
 
     /* words and strings */
-    CHECK(strcmp(dict_word(d, "name"), "glass-steel") == 0);
-    CHECK(strcmp(dict_word(d, "odd"), "a/b:c<d>,e+f.g") == 0);
-    CHECK(strcmp(dict_word(d, "quoted"), "a string; with { } ( ) and \"escapes\"") == 0);
-    CHECK(strcmp(dict_word_opt(d, "absentWord", "dflt"), "dflt") == 0);
+    CHECK(strcmp(dem_dict_word(d, "name"), "glass-steel") == 0);
+    CHECK(strcmp(dem_dict_word(d, "odd"), "a/b:c<d>,e+f.g") == 0);
+    CHECK(strcmp(dem_dict_word(d, "quoted"), "a string; with { } ( ) and \"escapes\"") == 0);
+    CHECK(strcmp(dem_dict_word_opt(d, "absentWord", "dflt"), "dflt") == 0);
     {
         static const char *const opts[] = { "hooke", "hertz", NULL };
-        CHECK(dict_choice(d, "model", opts) == 1);
-        CHECK(dict_choice_opt(d, "absentChoice", opts, 0) == 0);
+        CHECK(dem_dict_choice(d, "model", opts) == 1);
+        CHECK(dem_dict_choice_opt(d, "absentChoice", opts, 0) == 0);
     }
 
     /* booleans */
-    CHECK(dict_bool_opt(d, "flagT", 0) == 1);
-    CHECK(dict_bool_opt(d, "flagY", 0) == 1);
-    CHECK(dict_bool_opt(d, "flagOn", 0) == 1);
-    CHECK(dict_bool_opt(d, "flagF", 1) == 0);
-    CHECK(dict_bool_opt(d, "flagN", 1) == 0);
-    CHECK(dict_bool_opt(d, "flagOff", 1) == 0);
-    CHECK(dict_bool_opt(d, "absentFlag", 1) == 1);
-    dict_bools3_opt(d, "periodic", b, 1);
+    CHECK(dem_dict_bool_opt(d, "flagT", 0) == 1);
+    CHECK(dem_dict_bool_opt(d, "flagY", 0) == 1);
+    CHECK(dem_dict_bool_opt(d, "flagOn", 0) == 1);
+    CHECK(dem_dict_bool_opt(d, "flagF", 1) == 0);
+    CHECK(dem_dict_bool_opt(d, "flagN", 1) == 0);
+    CHECK(dem_dict_bool_opt(d, "flagOff", 1) == 0);
+    CHECK(dem_dict_bool_opt(d, "absentFlag", 1) == 1);
+    dem_dict_bools3_opt(d, "periodic", b, 1);
     CHECK(b[0] == 0 && b[1] == 0 && b[2] == 1);
-    dict_bools3_opt(d, "absentPeriodic", b, 1);
+    dem_dict_bools3_opt(d, "absentPeriodic", b, 1);
     CHECK(b[0] == 1 && b[1] == 1 && b[2] == 1);
 
     /* vectors and lists */
-    dict_vector(d, "gravity", v);
+    dem_dict_vector(d, "gravity", v);
     CHECK(v[0] == 0 && v[1] == 0 && v[2] == -9.81);
-    dict_vector(d, "counted", v);
+    dem_dict_vector(d, "counted", v);
     CHECK(v[0] == 1 && v[1] == 2 && v[2] == 3);
-    dict_vector_opt(d, "absentVector", v, one);
+    dem_dict_vector_opt(d, "absentVector", v, one);
     CHECK(v[0] == 1 && v[1] == 1 && v[2] == 1);
-    dict_vector_opt(d, "gravity", v, zero);
+    dem_dict_vector_opt(d, "gravity", v, zero);
     CHECK(v[2] == -9.81);
-    CHECK(dict_scalar_list(d, "list", &list) == 4);
+    CHECK(dem_dict_scalar_list(d, "list", &list) == 4);
     CHECK(list[0] == 1 && list[1] == 2.5 && list[2] == -3e-2 && list[3] == 4);
     free(list);
-    CHECK(dict_scalar_list(d, "counted", &list) == 3);
+    CHECK(dem_dict_scalar_list(d, "counted", &list) == 3);
     CHECK(list[2] == 3);
     free(list);
-    CHECK(dict_scalar_list(d, "empty", &list) == 0);
+    CHECK(dem_dict_scalar_list(d, "empty", &list) == 0);
     free(list);
-    CHECK(dict_scalar_list(d, "multiLine", &list) == 2);
+    CHECK(dem_dict_scalar_list(d, "multiLine", &list) == 2);
     CHECK(list[0] == 1 && list[1] == 2);
     free(list);
-    CHECK(dict_vector_list(d, "points", &list) == 3);
+    CHECK(dem_dict_vector_list(d, "points", &list) == 3);
     CHECK(list[0] == 0 && list[3] == 1 && list[4] == 2 && list[5] == 3 && list[6] == 4 && list[8] == 6);
     free(list);
-    CHECK(dict_vector_list(d, "countedPoints", &list) == 2);
+    CHECK(dem_dict_vector_list(d, "countedPoints", &list) == 2);
     CHECK(list[0] == 1 && list[5] == 2);
     free(list);
 
     /* duplicates: the later one wins, at the first one's position */
-    CHECK(dict_label(d, "dup", 0, 10) == 2);
-    CHECK(dict_key_line(d, "dup") == 25);
+    CHECK(dem_dict_label(d, "dup", 0, 10) == 2);
+    CHECK(dem_dict_key_line(d, "dup") == 25);
 
     /* #include, relative to the including file; nested include relative to inc/ */
-    CHECK(dict_has(d, "included"));
-    CHECK_NEAR(dict_scalar(d, "included", 0, 10), 3.5);
-    CHECK(dict_key_line(d, "included") == 2);
-    CHECK(dict_label(d, "fromMore", 0, 10) == 1);
+    CHECK(dem_dict_has(d, "included"));
+    CHECK_NEAR(dem_dict_scalar(d, "included", 0, 10), 3.5);
+    CHECK(dem_dict_key_line(d, "included") == 2);
+    CHECK(dem_dict_label(d, "fromMore", 0, 10) == 1);
     {
-        dict *s = dict_sub(d, "incDict");
+        dict *s = dem_dict_sub(d, "incDict");
         char want[512];
         snprintf(want, sizeof want, "%s/inc/extra", tmpdir);
-        CHECK(strcmp(dict_path(s), want) == 0);
-        CHECK(dict_label(s, "k", 0, 10) == 4);
+        CHECK(strcmp(dem_dict_path(s), want) == 0);
+        CHECK(dem_dict_label(s, "k", 0, 10) == 4);
     }
 
     /* nested dictionaries */
-    CHECK(dict_has(d, "FoamFile"));   /* kept, but marked used */
-    dict *sub = dict_sub(d, "sub");
-    CHECK(strcmp(dict_name(sub), "sub") == 0);
-    CHECK(dict_line(sub) == 28);
-    CHECK(dict_size(sub) == 2);
-    CHECK(strcmp(dict_key_at(sub, 0), "inner") == 0 && dict_is_dict_at(sub, 0));
-    CHECK(strcmp(dict_key_at(sub, 1), "x") == 0 && !dict_is_dict_at(sub, 1));
-    CHECK(dict_label(dict_dict_at(sub, 0), "deep", 0, 10) == 7);
-    CHECK(dict_label(sub, "x", 0, 10) == 1);
-    CHECK(dict_sub_opt(d, "absentSub") == NULL);
-    CHECK(dict_sub_opt(d, "sub") == sub);
+    CHECK(dem_dict_has(d, "FoamFile"));   /* kept, but marked used */
+    dict *sub = dem_dict_sub(d, "sub");
+    CHECK(strcmp(dem_dict_name(sub), "sub") == 0);
+    CHECK(dem_dict_line(sub) == 28);
+    CHECK(dem_dict_size(sub) == 2);
+    CHECK(strcmp(dem_dict_key_at(sub, 0), "inner") == 0 && dem_dict_is_dict_at(sub, 0));
+    CHECK(strcmp(dem_dict_key_at(sub, 1), "x") == 0 && !dem_dict_is_dict_at(sub, 1));
+    CHECK(dem_dict_label(dem_dict_dict_at(sub, 0), "deep", 0, 10) == 7);
+    CHECK(dem_dict_label(sub, "x", 0, 10) == 1);
+    CHECK(dem_dict_sub_opt(d, "absentSub") == NULL);
+    CHECK(dem_dict_sub_opt(d, "sub") == sub);
 
-    dict *mat = dict_sub(d, "materials");
-    CHECK(dict_size(mat) == 2);
-    CHECK(strcmp(dict_key_at(mat, 0), "glass") == 0);
-    CHECK(strcmp(dict_key_at(mat, 1), "steel") == 0);
-    for (int i = 0; i < dict_size(mat); i++)
-        CHECK(dict_scalar(dict_dict_at(mat, i), "density", 0, 1e4) > 2000);
-    CHECK(dict_label(d, "after", 0, 10) == 1);
+    dict *mat = dem_dict_sub(d, "materials");
+    CHECK(dem_dict_size(mat) == 2);
+    CHECK(strcmp(dem_dict_key_at(mat, 0), "glass") == 0);
+    CHECK(strcmp(dem_dict_key_at(mat, 1), "steel") == 0);
+    for (int i = 0; i < dem_dict_size(mat); i++)
+        CHECK(dem_dict_scalar(dem_dict_dict_at(mat, i), "density", 0, 1e4) > 2000);
+    CHECK(dem_dict_label(d, "after", 0, 10) == 1);
 
     /* everything was read, and the FoamFile header counts as used */
-    dict_check_unused(d);
-    dict_free(d);
+    dem_dict_check_unused(d);
+    dem_dict_free(d);
 }
 
 int main(int argc, char **argv)

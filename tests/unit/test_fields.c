@@ -39,7 +39,7 @@ enum { MAX_ELEMENT = 64 };
  * with bit patterns that a float round trip or a conversion would lose. */
 static void expected(int k, int seed, unsigned char out[MAX_ELEMENT])
 {
-    const particle_field *f = &particle_fields[k];
+    const particle_field *f = &dem_particle_fields[k];
     for (int c = 0; c < f->components; c++) {
         if (f->scalar == PF_DOUBLE) {
             const double v = (k + 1) / 3.0 + sin(0.7 * seed + c) * 1e-3 + seed * 1e-7;
@@ -56,19 +56,19 @@ static void expected(int k, int seed, unsigned char out[MAX_ELEMENT])
 
 static unsigned char *element(const particles *p, int k, int i)
 {
-    return (unsigned char *)particle_field_data(p, &particle_fields[k]) + (size_t)i * particle_fields[k].element_size;
+    return (unsigned char *)particle_field_data(p, &dem_particle_fields[k]) + (size_t)i * dem_particle_fields[k].element_size;
 }
 
 static void fill(particles *p, int k, int i, int seed)
 {
     unsigned char e[MAX_ELEMENT];
     expected(k, seed, e);
-    memcpy(element(p, k, i), e, particle_fields[k].element_size);
+    memcpy(element(p, k, i), e, dem_particle_fields[k].element_size);
 }
 
 static void fill_all(particles *p, int n)
 {
-    particles_reserve(p, n);
+    dem_particles_reserve(p, n);
     p->n = n;
     for (int k = 0; k < PARTICLE_FIELD_COUNT; k++)
         for (int i = 0; i < n; i++) fill(p, k, i, i);
@@ -78,13 +78,13 @@ static int holds(const particles *p, int k, int i, int seed)
 {
     unsigned char e[MAX_ELEMENT];
     expected(k, seed, e);
-    return memcmp(element(p, k, i), e, particle_fields[k].element_size) == 0;
+    return memcmp(element(p, k, i), e, dem_particle_fields[k].element_size) == 0;
 }
 
 static int is_zero(const particles *p, int k, int i)
 {
     const unsigned char *b = element(p, k, i);
-    for (size_t q = 0; q < particle_fields[k].element_size; q++)
+    for (size_t q = 0; q < dem_particle_fields[k].element_size; q++)
         if (b[q]) return 0;
     return 1;
 }
@@ -98,7 +98,7 @@ static void check_table(void)
           PARTICLE_FIELD_COUNT, arrays);
     int seen[64] = {0};
     for (int k = 0; k < PARTICLE_FIELD_COUNT; k++) {
-        const particle_field *f = &particle_fields[k];
+        const particle_field *f = &dem_particle_fields[k];
         const size_t slot = (f->offset - offsetof(particles, x)) / sizeof(void *);
         CHECK(f->offset >= offsetof(particles, x) && slot < 64 && !seen[slot]++, "%s: offset %zu", f->member,
               f->offset);
@@ -107,8 +107,8 @@ static void check_table(void)
               "%s: %zu bytes for %d components", f->member, f->element_size, f->components);
         CHECK(f->unit && f->unit[0], "%s: no unit", f->member);
         for (int j = 0; j < k; j++) {
-            CHECK(strcmp(f->member, particle_fields[j].member) != 0, "member %s twice", f->member);
-            CHECK(strcmp(f->dataset, particle_fields[j].dataset) != 0, "dataset %s twice", f->dataset);
+            CHECK(strcmp(f->member, dem_particle_fields[j].member) != 0, "member %s twice", f->member);
+            CHECK(strcmp(f->dataset, dem_particle_fields[j].dataset) != 0, "dataset %s twice", f->dataset);
         }
     }
     /* what the tests' and tutorials' post-processing read from every snapshot */
@@ -118,7 +118,7 @@ static void check_table(void)
         {PF_FIELD_torque, "torque", PF_RESTART}, {PF_FIELD_radius, "radius", PF_WRITE | PF_RESTART},
         {PF_FIELD_id, "id", PF_WRITE | PF_RESTART}, {PF_FIELD_type, "type", PF_WRITE | PF_RESTART}};
     for (size_t q = 0; q < sizeof kept / sizeof kept[0]; q++) {
-        const particle_field *f = &particle_fields[kept[q].field];
+        const particle_field *f = &dem_particle_fields[kept[q].field];
         CHECK(strcmp(f->dataset, kept[q].dataset) == 0 && (f->flags & kept[q].flags) == kept[q].flags,
               "%s: dataset '%s' flags %u, expected '%s' with %u", f->member, f->dataset, f->flags,
               kept[q].dataset, kept[q].flags);
@@ -129,62 +129,62 @@ static void check_table(void)
 static void check_allocation(void)
 {
     particles p;
-    particles_init(&p);
+    dem_particles_init(&p);
     fill_all(&p, 1000);
     for (int k = 0; k < PARTICLE_FIELD_COUNT; k++)
-        CHECK(particle_field_data(&p, &particle_fields[k]) != NULL, "%s not allocated", particle_fields[k].member);
-    particles_reserve(&p, 5000);
+        CHECK(particle_field_data(&p, &dem_particle_fields[k]) != NULL, "%s not allocated", dem_particle_fields[k].member);
+    dem_particles_reserve(&p, 5000);
     CHECK(p.capacity == 5000, "capacity %d after reserve(5000)", p.capacity);
     for (int k = 0; k < PARTICLE_FIELD_COUNT; k++) {
         fill(&p, k, 4999, 4999);   /* the last element is writable (valgrind/ASan would see it) */
         int bad = 0;
         for (int i = 0; i < 1000; i++) bad += !holds(&p, k, i, i);
-        CHECK(!bad, "%s: %d values lost when growing", particle_fields[k].member, bad);
+        CHECK(!bad, "%s: %d values lost when growing", dem_particle_fields[k].member, bad);
     }
-    particles_free(&p);
+    dem_particles_free(&p);
     for (int k = 0; k < PARTICLE_FIELD_COUNT; k++)
-        CHECK(particle_field_data(&p, &particle_fields[k]) == NULL, "%s not freed", particle_fields[k].member);
+        CHECK(particle_field_data(&p, &dem_particle_fields[k]) == NULL, "%s not freed", dem_particle_fields[k].member);
 }
 
-/* 3. particles_add: the fields it is given or derives are set, every other one is 0 (the
+/* 3. dem_particles_add: the fields it is given or derives are set, every other one is 0 (the
  *    memory is dirtied first). */
 static void check_add(void)
 {
     particles p;
-    particles_init(&p);
+    dem_particles_init(&p);
     fill_all(&p, 8);
     p.n = 5;
     const double x[3] = {0.1, -0.2, 0.3}, v[3] = {1.5, 2.5, -3.5}, r = 1e-3, rho = 2500.0;
-    const int i = particles_add(&p, x, v, r, rho, 2, 77);
-    CHECK(i == 5 && p.n == 6, "particles_add gave index %d, n %d", i, p.n);
+    const int i = dem_particles_add(&p, x, v, r, rho, 2, 77);
+    CHECK(i == 5 && p.n == 6, "dem_particles_add gave index %d, n %d", i, p.n);
     const double m = rho * 4.0 / 3.0 * M_PI * r * r * r;
     CHECK(p.x[i][0] == x[0] && p.x[i][1] == x[1] && p.x[i][2] == x[2] && p.v[i][0] == v[0] &&
               p.v[i][1] == v[1] && p.v[i][2] == v[2] && p.radius[i] == r && p.type[i] == 2 && p.id[i] == 77 &&
               p.mass[i] == m && p.inv_mass[i] == 1.0 / m && p.inv_inertia[i] == 1.0 / (0.4 * m * r * r),
-          "particles_add: the given and derived values are not as given");
+          "dem_particles_add: the given and derived values are not as given");
     static const int set_by_add[] = {PF_FIELD_x, PF_FIELD_v, PF_FIELD_radius, PF_FIELD_type, PF_FIELD_id,
                                      PF_FIELD_mass, PF_FIELD_inv_mass, PF_FIELD_inv_inertia};
     for (int k = 0; k < PARTICLE_FIELD_COUNT; k++) {
         int given = 0;
         for (size_t q = 0; q < sizeof set_by_add / sizeof set_by_add[0]; q++) given |= set_by_add[q] == k;
-        if (!given) CHECK(is_zero(&p, k, i), "particles_add: %s not zeroed", particle_fields[k].member);
-        CHECK(holds(&p, k, 4, 4), "particles_add: %s of particle 4 changed", particle_fields[k].member);
+        if (!given) CHECK(is_zero(&p, k, i), "dem_particles_add: %s not zeroed", dem_particle_fields[k].member);
+        CHECK(holds(&p, k, 4, 4), "dem_particles_add: %s of particle 4 changed", dem_particle_fields[k].member);
     }
     /* growing from full */
     particles q;
-    particles_init(&q);
-    for (int j = 0; j < 1500; j++) particles_add(&q, x, v, r, rho, 0, j);
+    dem_particles_init(&q);
+    for (int j = 0; j < 1500; j++) dem_particles_add(&q, x, v, r, rho, 0, j);
     CHECK(q.n == 1500 && q.id[0] == 0 && q.id[1499] == 1499, "1500 adds: n %d", q.n);
-    particles_free(&q);
-    particles_free(&p);
+    dem_particles_free(&q);
+    dem_particles_free(&p);
 }
 
-/* 4. Sorting: after particles_permute, new index j holds every field of old index order[j]. */
+/* 4. Sorting: after dem_particles_permute, new index j holds every field of old index order[j]. */
 static void check_permute(void)
 {
     enum { N = 257 };
     particles p;
-    particles_init(&p);
+    dem_particles_init(&p);
     fill_all(&p, N);
     int order[N];
     for (int j = 0; j < N; j++) order[j] = j;
@@ -196,13 +196,13 @@ static void check_permute(void)
         order[j] = order[r];
         order[r] = t;
     }
-    particles_permute(&p, order);
+    dem_particles_permute(&p, order);
     for (int k = 0; k < PARTICLE_FIELD_COUNT; k++) {
         int bad = 0;
         for (int j = 0; j < N; j++) bad += !holds(&p, k, j, order[j]);
-        CHECK(!bad, "permute: %s wrong at %d of %d particles", particle_fields[k].member, bad, N);
+        CHECK(!bad, "permute: %s wrong at %d of %d particles", dem_particle_fields[k].member, bad, N);
     }
-    particles_free(&p);
+    dem_particles_free(&p);
 }
 
 /* 5. Copying one particle onto another, and packing one for another rank: the PF_MIGRATE
@@ -210,32 +210,32 @@ static void check_permute(void)
 static void check_copy_and_pack(void)
 {
     particles p, q;
-    particles_init(&p);
-    particles_init(&q);
+    dem_particles_init(&p);
+    dem_particles_init(&q);
     fill_all(&p, 20);
-    particles_copy(&p, 3, 10);
+    dem_particles_copy(&p, 3, 10);
     for (int k = 0; k < PARTICLE_FIELD_COUNT; k++)
         CHECK(holds(&p, k, 10, 3) && holds(&p, k, 3, 3) && holds(&p, k, 11, 11), "copy: %s",
-              particle_fields[k].member);
+              dem_particle_fields[k].member);
 
     size_t migrating = 0;
     for (int k = 0; k < PARTICLE_FIELD_COUNT; k++)
-        if (particle_fields[k].flags & PF_MIGRATE) migrating += particle_fields[k].element_size;
-    CHECK(particles_pack_size() == migrating, "pack size %zu, expected %zu", particles_pack_size(), migrating);
-    unsigned char *buf = malloc(particles_pack_size() + 1);
-    CHECK(particles_pack(&p, 7, buf) == migrating, "particles_pack wrote another size");
+        if (dem_particle_fields[k].flags & PF_MIGRATE) migrating += dem_particle_fields[k].element_size;
+    CHECK(dem_particles_pack_size() == migrating, "pack size %zu, expected %zu", dem_particles_pack_size(), migrating);
+    unsigned char *buf = malloc(dem_particles_pack_size() + 1);
+    CHECK(dem_particles_pack(&p, 7, buf) == migrating, "dem_particles_pack wrote another size");
     fill_all(&q, 4);
-    const int i = particles_unpack(&q, buf);
+    const int i = dem_particles_unpack(&q, buf);
     CHECK(i == 4 && q.n == 5, "unpack gave index %d, n %d", i, q.n);
     for (int k = 0; k < PARTICLE_FIELD_COUNT; k++) {
-        if (particle_fields[k].flags & PF_MIGRATE)
-            CHECK(holds(&q, k, i, 7), "unpack: %s did not travel", particle_fields[k].member);
+        if (dem_particle_fields[k].flags & PF_MIGRATE)
+            CHECK(holds(&q, k, i, 7), "unpack: %s did not travel", dem_particle_fields[k].member);
         else
-            CHECK(is_zero(&q, k, i), "unpack: %s (not migrating) is not 0", particle_fields[k].member);
+            CHECK(is_zero(&q, k, i), "unpack: %s (not migrating) is not 0", dem_particle_fields[k].member);
     }
     free(buf);
-    particles_free(&p);
-    particles_free(&q);
+    dem_particles_free(&p);
+    dem_particles_free(&q);
 }
 
 /* Raw contents of dataset `name` of /snapshots/000000 in the field's memory type; NULL if absent.
@@ -309,15 +309,15 @@ static void check_snapshot(const char *dir)
     snprintf(h5, sizeof h5, "%s.h5", base);
     snprintf(xdmf, sizeof xdmf, "%s.xdmf", base);
     particles p, r;
-    particles_init(&p);
-    particles_init(&r);
+    dem_particles_init(&p);
+    dem_particles_init(&r);
     fill_all(&p, N);
-    particle_writer *w = io_open_writer(base, 0);
-    io_write_snapshot(w, &p, 0.25, 9);
-    io_close_writer(w);
+    particle_writer *w = dem_io_open_writer(base, 0);
+    dem_io_write_snapshot(w, &p, 0.25, 9);
+    dem_io_close_writer(w);
 
     for (int k = 0; k < PARTICLE_FIELD_COUNT; k++) {
-        const particle_field *f = &particle_fields[k];
+        const particle_field *f = &dem_particle_fields[k];
         char *units;
         int shape_ok;
         void *raw = read_raw(h5, f, N, &units, &shape_ok);
@@ -337,7 +337,7 @@ static void check_snapshot(const char *dir)
     char *x = slurp(xdmf);
     CHECK(x != NULL, "no %s", xdmf);
     for (int k = 0; x && k < PARTICLE_FIELD_COUNT; k++) {
-        const particle_field *f = &particle_fields[k];
+        const particle_field *f = &dem_particle_fields[k];
         char item[256], attr[256];
         snprintf(item, sizeof item, "particles.h5:/snapshots/000000/%s<", f->dataset);
         snprintf(attr, sizeof attr, "<Attribute Name=\"%s\" AttributeType=\"%s\"", f->dataset,
@@ -353,17 +353,17 @@ static void check_snapshot(const char *dir)
     contact_state cs;
     double t;
     long step;
-    CHECK(io_read_snapshot_at(base, NAN, 0.0, &r, &t, &step, &cs) == 0 && r.n == N && t == 0.25 && step == 9,
+    CHECK(dem_io_read_snapshot_at(base, NAN, 0.0, &r, &t, &step, &cs) == 0 && r.n == N && t == 0.25 && step == 9,
           "restart read: n %d t %g step %ld", r.n, t, step);
     CHECK(cs.forces_read == 1, "restart read: the forces were not kept");
     for (int k = 0; r.n == N && k < PARTICLE_FIELD_COUNT; k++) {
-        const particle_field *f = &particle_fields[k];
+        const particle_field *f = &dem_particle_fields[k];
         int bad = 0;
         for (int i = 0; i < N; i++) bad += (f->flags & PF_RESTART) ? !holds(&r, k, i, i) : !is_zero(&r, k, i);
         CHECK(!bad, "restart read: %s wrong at %d of %d particles (%s)", f->member, bad, N,
               (f->flags & PF_RESTART) ? "expected as written" : "expected 0");
     }
-    contact_state_free(&cs);
+    dem_contact_state_free(&cs);
 
     /* an older snapshot, without torque */
     hid_t file = H5Fopen(h5, H5F_ACC_RDWR, H5P_DEFAULT);
@@ -371,17 +371,17 @@ static void check_snapshot(const char *dir)
     H5Fclose(file);
     dem_logger old = dem_set_logger(count_warnings);
     fill_all(&r, 40);
-    CHECK(io_read_snapshot_at(base, NAN, 0.0, &r, &t, &step, &cs) == 0 && r.n == N, "older file: not read");
+    CHECK(dem_io_read_snapshot_at(base, NAN, 0.0, &r, &t, &step, &cs) == 0 && r.n == N, "older file: not read");
     dem_set_logger(old);
     CHECK(warnings_about_torque == 1, "older file: %d warnings about torque", warnings_about_torque);
     CHECK(cs.forces_read == 0, "older file: forces kept without torque");
     int bad = 0;
     for (int i = 0; r.n == N && i < N; i++) bad += !is_zero(&r, PF_FIELD_torque, i) || !holds(&r, PF_FIELD_f, i, i);
     CHECK(!bad, "older file: torque not 0 or force not read at %d particles", bad);
-    contact_state_free(&cs);
+    dem_contact_state_free(&cs);
 
-    particles_free(&p);
-    particles_free(&r);
+    dem_particles_free(&p);
+    dem_particles_free(&r);
     if (!failures) {
         remove(h5);
         remove(xdmf);
@@ -405,8 +405,8 @@ int main(int argc, char **argv)
     check_snapshot(dir);
     printf("fields:");
     for (int k = 0; k < PARTICLE_FIELD_COUNT; k++)
-        printf(" %s%s%s%s", particle_fields[k].member, particle_fields[k].flags & PF_WRITE ? " W" : "",
-               particle_fields[k].flags & PF_RESTART ? " R" : "", particle_fields[k].flags & PF_MIGRATE ? " M" : "");
+        printf(" %s%s%s%s", dem_particle_fields[k].member, dem_particle_fields[k].flags & PF_WRITE ? " W" : "",
+               dem_particle_fields[k].flags & PF_RESTART ? " R" : "", dem_particle_fields[k].flags & PF_MIGRATE ? " M" : "");
     printf("\n");
     if (failures) {
         fprintf(stderr, "test_fields: files kept in %s\n", dir);

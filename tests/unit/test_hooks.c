@@ -110,16 +110,16 @@ static void logger_gets_the_lines(const char *dir)
     const dem_logger previous = dem_set_logger(keep_line);
     divert_output(out);
     dem_system s;
-    system_init(&s);
+    dem_system_init(&s);
     run_settings rs;
-    case_read(dir, &s, &rs, 0);
-    timestep_check(&s, case_default_max_velocity(&s), rs.timestep_override, rs.timestep_source);
+    dem_case_read(dir, &s, &rs, 0);
+    dem_timestep_check(&s, dem_case_default_max_velocity(&s), rs.timestep_override, rs.timestep_source);
     static char long_name[3001];
     memset(long_name, 'x', 3000);
     dem_info("%s", long_name);
     const long printed = output_size(out);
     dem_set_logger(previous);
-    system_free(&s);
+    dem_system_free(&s);
 
     for (int k = 0; k < nlines; k++) printf("      logged (%s): %.100s\n", line_level[k] ? "warning" : "info", line_text[k]);
     check_true("logger: the insertion's info line", kept(DEM_LOG_INFO, "insertion 'fill': 20 particles") != NULL);
@@ -149,9 +149,9 @@ static void handler_gets_the_error(const char *dir)
     divert_output(out);
     if (setjmp(caught_jump) == 0) {
         dem_system s;
-        system_init(&s);
+        dem_system_init(&s);
         run_settings rs;
-        case_read(dir, &s, &rs, 0);
+        dem_case_read(dir, &s, &rs, 0);
     } else {
         stopped = 1;
     }

@@ -33,7 +33,7 @@ static int checks = 0, failures = 0;
 /* Known, non-round values for snapshot k (bit patterns that a float round trip would lose). */
 static void fill(particles *p, int n, int k)
 {
-    particles_reserve(p, n);
+    dem_particles_reserve(p, n);
     p->n = n;
     for (int i = 0; i < n; i++) {
         for (int d = 0; d < 3; d++) {
@@ -55,11 +55,11 @@ static void fill(particles *p, int n, int k)
 static void compare(const particles *r, int n, int k, const char *what)
 {
     particles e;
-    particles_init(&e);
+    dem_particles_init(&e);
     fill(&e, n, k);
     CHECK(r->n == n, "%s: n = %d, expected %d", what, r->n, n);
     if (r->n != n) {
-        particles_free(&e);
+        dem_particles_free(&e);
         return;
     }
     int bad_x = 0, bad_v = 0, bad_w = 0, bad_f = 0, bad_r = 0, bad_id = 0, bad_t = 0, bad_zero = 0;
@@ -83,7 +83,7 @@ static void compare(const particles *r, int n, int k, const char *what)
     CHECK(!bad_id, "%s: %d ids differ", what, bad_id);
     CHECK(!bad_t, "%s: %d types differ", what, bad_t);
     CHECK(!bad_zero, "%s: %d f_ext values not reset to zero", what, bad_zero);
-    particles_free(&e);
+    dem_particles_free(&e);
 }
 
 static char *slurp(const char *path)
@@ -162,7 +162,7 @@ static void add_partial_snapshot(const char *h5, const char *name)
     H5Fclose(f);
 }
 
-/* Run io_read_last_snapshot in a child; returns its exit status, or -signal if it crashed. */
+/* Run dem_io_read_last_snapshot in a child; returns its exit status, or -signal if it crashed. */
 static int read_in_child(const char *base)
 {
     fflush(NULL);
@@ -170,10 +170,10 @@ static int read_in_child(const char *base)
     if (pid == 0) {
         freopen("/dev/null", "w", stderr);
         particles p;
-        particles_init(&p);
+        dem_particles_init(&p);
         double t;
         long s;
-        io_read_last_snapshot(base, &p, &t, &s);
+        dem_io_read_last_snapshot(base, &p, &t, &s);
         _exit(0);
     }
     int status = 0;
@@ -200,21 +200,21 @@ int main(int argc, char **argv)
     const long steps[] = {0, 100, 200, 300, 400};
 
     particles p, r;
-    particles_init(&p);
-    particles_init(&r);
+    dem_particles_init(&p);
+    dem_particles_init(&r);
     double t;
     long s;
 
     /* 1. Three snapshots, read the last one back. */
-    particle_writer *w = io_open_writer(base, 0);
+    particle_writer *w = dem_io_open_writer(base, 0);
     for (int k = 0; k < 3; k++) {
         fill(&p, sizes[k], k);
-        io_write_snapshot(w, &p, times[k], steps[k]);
+        dem_io_write_snapshot(w, &p, times[k], steps[k]);
     }
-    io_close_writer(w);
+    dem_io_close_writer(w);
     /* Garbage in the destination to see that everything is overwritten. */
     fill(&r, 10, 7);
-    CHECK(io_read_last_snapshot(base, &r, &t, &s) == 0, "read after 3 snapshots failed");
+    CHECK(dem_io_read_last_snapshot(base, &r, &t, &s) == 0, "read after 3 snapshots failed");
     CHECK(t == times[2] && s == steps[2], "time/step %g/%ld, expected %g/%ld", t, s, times[2],
           steps[2]);
     compare(&r, sizes[2], 2, "snapshot 2");
@@ -245,17 +245,17 @@ int main(int argc, char **argv)
     fflush(NULL);
     pid_t pid = fork();
     if (pid == 0) {
-        particle_writer *cw = io_open_writer(base, 1);
+        particle_writer *cw = dem_io_open_writer(base, 1);
         particles q;
-        particles_init(&q);
+        dem_particles_init(&q);
         fill(&q, sizes[3], 3);
-        io_write_snapshot(cw, &q, times[3], steps[3]);
-        _exit(0); /* no io_close_writer, no HDF5 shutdown */
+        dem_io_write_snapshot(cw, &q, times[3], steps[3]);
+        _exit(0); /* no dem_io_close_writer, no HDF5 shutdown */
     }
     int status = 0;
     waitpid(pid, &status, 0);
     CHECK(WIFEXITED(status) && WEXITSTATUS(status) == 0, "writer child failed");
-    CHECK(io_read_last_snapshot(base, &r, &t, &s) == 0, "read after killed writer failed");
+    CHECK(dem_io_read_last_snapshot(base, &r, &t, &s) == 0, "read after killed writer failed");
     CHECK(s == steps[3] && t == times[3], "after killed writer: step %ld, expected %ld", s,
           steps[3]);
     compare(&r, sizes[3], 3, "snapshot 3 (writer killed)");
@@ -263,23 +263,23 @@ int main(int argc, char **argv)
     /* 4. Killed while writing: a group without `complete` is ignored. */
     add_partial_snapshot(h5, "000004");
     CHECK(snapshot_exists(h5, "000004", NULL, NULL) == 1, "partial group not created");
-    CHECK(io_read_last_snapshot(base, &r, &t, &s) == 0, "read with partial group failed");
+    CHECK(dem_io_read_last_snapshot(base, &r, &t, &s) == 0, "read with partial group failed");
     CHECK(s == steps[3] && t == times[3], "with partial group: step %ld, expected %ld", s,
           steps[3]);
     compare(&r, sizes[3], 3, "snapshot 3 (partial 4 present)");
 
     /* 5. Append continues after the last complete snapshot, replacing the partial group. */
-    w = io_open_writer(base, 1);
+    w = dem_io_open_writer(base, 1);
     CHECK(snapshot_exists(h5, "000004", NULL, NULL) == 0, "partial group not removed on append");
     fill(&p, sizes[4], 4);
-    io_write_snapshot(w, &p, times[4], steps[4]);
-    io_close_writer(w);
+    dem_io_write_snapshot(w, &p, times[4], steps[4]);
+    dem_io_close_writer(w);
     long st = -1;
     int complete = 0;
     CHECK(snapshot_exists(h5, "000004", &st, &complete) == 1 && complete == 1 && st == steps[4],
           "append: /snapshots/000004 step %ld complete %d", st, complete);
     CHECK(snapshot_exists(h5, "000005", NULL, NULL) == 0, "append: unexpected 000005");
-    CHECK(io_read_last_snapshot(base, &r, &t, &s) == 0, "read after append failed");
+    CHECK(dem_io_read_last_snapshot(base, &r, &t, &s) == 0, "read after append failed");
     CHECK(s == steps[4] && t == times[4], "after append: step %ld", s);
     compare(&r, sizes[4], 4, "snapshot 4 (appended)");
     x = slurp(xdmf);
@@ -290,24 +290,24 @@ int main(int argc, char **argv)
     free(x);
 
     /* 6. append=0 truncates; an empty particle set round-trips too. */
-    w = io_open_writer(base, 0);
-    CHECK(io_read_last_snapshot(base, &r, &t, &s) == -1, "new file should have no snapshot");
+    w = dem_io_open_writer(base, 0);
+    CHECK(dem_io_read_last_snapshot(base, &r, &t, &s) == -1, "new file should have no snapshot");
     p.n = 0;
-    io_write_snapshot(w, &p, 0.5, 7);
-    io_close_writer(w);
+    dem_io_write_snapshot(w, &p, 0.5, 7);
+    dem_io_close_writer(w);
     CHECK(snapshot_exists(h5, "000000", NULL, NULL) == 1, "truncate: no 000000");
     CHECK(snapshot_exists(h5, "000001", NULL, NULL) == 0, "truncate: old 000001 still there");
-    CHECK(io_read_last_snapshot(base, &r, &t, &s) == 0 && r.n == 0 && t == 0.5 && s == 7,
+    CHECK(dem_io_read_last_snapshot(base, &r, &t, &s) == 0 && r.n == 0 && t == 0.5 && s == 7,
           "empty snapshot: n %d t %g s %ld", r.n, t, s);
 
     /* 7. Append to a file that does not exist yet creates it. */
     char base2[4300];
     snprintf(base2, sizeof base2, "%s/fresh", dir);
-    w = io_open_writer(base2, 1);
+    w = dem_io_open_writer(base2, 1);
     fill(&p, 5, 1);
-    io_write_snapshot(w, &p, 1.0, 1);
-    io_close_writer(w);
-    CHECK(io_read_last_snapshot(base2, &r, &t, &s) == 0 && s == 1, "append to missing file");
+    dem_io_write_snapshot(w, &p, 1.0, 1);
+    dem_io_close_writer(w);
+    CHECK(dem_io_read_last_snapshot(base2, &r, &t, &s) == 0 && s == 1, "append to missing file");
     compare(&r, 5, 1, "fresh file");
 
     /* 8. Missing or corrupt files: clean fatal exit (status 1), never a crash. */
@@ -336,8 +336,8 @@ int main(int argc, char **argv)
     } else {
         fprintf(stderr, "test_io: files kept in %s\n", dir);
     }
-    particles_free(&p);
-    particles_free(&r);
+    dem_particles_free(&p);
+    dem_particles_free(&r);
     if (failures) {
         printf("test_io: %d of %d checks FAILED\n", failures, checks);
         return 1;

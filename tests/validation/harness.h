@@ -39,14 +39,14 @@ static inline int finish(const char *name)
 static inline void make_system(dem_system *s, double E, double nu, double rho, double e, double mu,
                         enum normal_model normal, enum tangential_model tangential, double L)
 {
-    system_init(s);
+    dem_system_init(s);
     material *m = &s->materials.mat[0];
     snprintf(m->name, sizeof m->name, "test");
     m->youngs_modulus = E;
     m->poisson_ratio = nu;
     m->density = rho;
     s->materials.ntypes = 1;
-    materials_set_pair(&s->materials, 0, 0, e, mu);
+    dem_materials_set_pair(&s->materials, 0, 0, e, mu);
     s->models.normal = normal;
     s->models.tangential = tangential;
     for (int d = 0; d < 3; d++) { s->domain_min[d] = -L; s->domain_max[d] = L; }
@@ -59,12 +59,12 @@ static inline void make_system(dem_system *s, double E, double nu, double rho, d
 static inline int add_sphere(dem_system *s, double x, double y, double z, double vx, double vy, double vz, double r)
 {
     const double pos[3] = {x, y, z}, vel[3] = {vx, vy, vz};
-    return particles_add(&s->p, pos, vel, r, s->materials.mat[0].density, 0, s->next_id++);
+    return dem_particles_add(&s->p, pos, vel, r, s->materials.mat[0].density, 0, s->next_id++);
 }
 
 static inline void add_plane(dem_system *s, double px, double py, double pz, double nx, double ny, double nz)
 {
-    wall *w = walls_add(s);
+    wall *w = dem_walls_add(s);
     memset(w, 0, sizeof *w);
     snprintf(w->name, sizeof w->name, "plane%d", s->nwalls);
     w->kind = WALL_PLANE;

@@ -53,10 +53,10 @@ static impact_result run_impact(const impact_spec *sp)
         add_sphere(&s, 0, 0, -r - gap, 0.5 * sp->vt, 0, 0.5 * sp->vn, r);
         add_sphere(&s, 0, 0, r + gap, -0.5 * sp->vt, 0, -0.5 * sp->vn, r);
     }
-    system_setup(&s);
+    dem_system_setup(&s);
     int touched = 0;
     for (long k = 0; k < 100000000; k++) {
-        system_step(&s);
+        dem_system_step(&s);
         const double dist = sp->wall ? s.p.x[0][2] : s.p.x[1][2] - s.p.x[0][2];
         const double overlap = (sp->wall ? r : 2 * r) - dist;
         if (overlap > 0) touched = 1;
@@ -75,7 +75,7 @@ static impact_result run_impact(const impact_spec *sp)
         res.vn_after = s.p.v[1][2];
         res.omega_after = s.p.omega[1][1];
     }
-    system_free(&s);
+    dem_system_free(&s);
     return res;
 }
 

@@ -56,10 +56,10 @@ static void setup(dem_system *s, enum normal_model model, double e, int wall, do
     make_system(s, E, NU, RHO, e, 0.0, model, tangential_none, 0.05);
     if (model == normal_jkr) {
         const jkr_params p = {W};
-        materials_set_model_values(&s->materials, 0, 0, SLOT_NORMAL, &p, sizeof p);
+        dem_materials_set_model_values(&s->materials, 0, 0, SLOT_NORMAL, &p, sizeof p);
     } else {
         const dmt_params p = {W};
-        materials_set_model_values(&s->materials, 0, 0, SLOT_NORMAL, &p, sizeof p);
+        dem_materials_set_model_values(&s->materials, 0, 0, SLOT_NORMAL, &p, sizeof p);
     }
     s->nlist.skin = 0.5 * RAD;   /* far more than any motion here: the list is built once */
     s->dt = DT;
@@ -70,7 +70,7 @@ static void setup(dem_system *s, enum normal_model model, double e, int wall, do
         add_sphere(s, 0, 0, 0, 0, 0, 0, RAD);
         add_sphere(s, 2.0 * RAD - delta0, 0, 0, 0, 0, 0, RAD);
     }
-    system_setup(s);
+    dem_system_setup(s);
 }
 
 /* normal force (+ repulsive) at overlap delta, particles held in place */
@@ -78,11 +78,11 @@ static double force_at(dem_system *s, int wall, double delta)
 {
     if (wall) {
         s->p.x[0][0] = RAD - delta;
-        system_compute_forces(s);
+        dem_system_compute_forces(s);
         return s->p.f[0][0];
     }
     s->p.x[1][0] = 2.0 * RAD - delta;
-    system_compute_forces(s);
+    dem_system_compute_forces(s);
     return 0.5 * (s->p.f[1][0] - s->p.f[0][0]);
 }
 
@@ -143,7 +143,7 @@ static void jkr_trace(int wall)
     check_zero(what, force_at(&s, wall, -0.5 * dc), 0.0);
     snprintf(what, sizeof what, "1. JKR %s: touching again (overlap 1e-3 delta_c): snap-in [N]", tag);
     check_rel(what, force_at(&s, wall, 1e-3 * dc), -4.0 / 3.0 * M_PI * W * R, 1e-2);
-    system_free(&s);
+    dem_system_free(&s);
 }
 
 static void dmt_trace(int wall)
@@ -160,7 +160,7 @@ static void dmt_trace(int wall)
     check_rel(what, force_at(&s, wall, 1e-15), -fc, 1e-6);
     snprintf(what, sizeof what, "1. DMT %s: loading to 20 um vs F(delta) (worst)", tag);
     check_zero(what, trace(&s, wall, dmt_force, R, 0.0, 20e-6, 2000, fc, NULL), 1e-12);
-    system_free(&s);
+    dem_system_free(&s);
 }
 
 /* ---------------------------------------------------------------- load-controlled pull-off */
@@ -184,16 +184,16 @@ static int pull(enum normal_model model, double P, double limit, double *delta_e
     dem_system s;
     setup(&s, model, 0.3, 0, 1e-7);
     const long n_settle = lround(0.05 / DT), nr = lround(0.2 / DT), nh = lround(0.1 / DT);
-    for (long k = 0; k < n_settle; k++) system_step(&s);
+    for (long k = 0; k < n_settle; k++) dem_system_step(&s);
     int bonded = 1;
     for (long k = 1; k <= nr + nh; k++) {
         set_pull(&s, P * (k < nr ? (double)k / nr : 1.0));
-        system_step(&s);
+        dem_system_step(&s);
         if (overlap(&s) <= -limit) bonded = 0;
         if (overlap(&s) < -0.1 * RAD) break;   /* well apart */
     }
     *delta_end = overlap(&s);
-    system_free(&s);
+    dem_system_free(&s);
     return bonded;
 }
 

@@ -71,12 +71,12 @@ static void pair_setup(dem_system *s, double delta_start)
 {
     make_system(s, E, NU, RHO, 0.3, 0.5, normal_hertz, tangential_history, 0.05);
     const sjkr_params mp = {K_COH};
-    materials_set_model_values(&s->materials, 0, 0, SLOT_COHESION, &mp, sizeof mp);
+    dem_materials_set_model_values(&s->materials, 0, 0, SLOT_COHESION, &mp, sizeof mp);
     s->models.cohesion = cohesion_sjkr;
     add_sphere(s, -RI, 0, 0, 0, 0, 0, RI);                        /* id 0 */
     add_sphere(s, RJ - delta_start, 0, 0, 0, 0, 0, RJ);           /* id 1 */
     s->dt = DT;
-    system_setup(s);
+    dem_system_setup(s);
 }
 
 static double overlap(const dem_system *s)
@@ -96,7 +96,7 @@ static void settle(dem_system *s, double t)
 {
     set_pull(s, 0.0);
     const long n = lround(t / DT);
-    for (long k = 0; k < n; k++) system_step(s);
+    for (long k = 0; k < n; k++) dem_system_step(s);
 }
 
 /* Ramp 0 -> P over t_ramp, hold for t_hold; returns 1 if the contact stayed closed throughout,
@@ -107,7 +107,7 @@ static int pull(dem_system *s, double P, double t_ramp, double t_hold, double *d
     int bonded = 1;
     for (long k = 1; k <= nr + nh; k++) {
         set_pull(s, P * (k < nr ? (double)k / nr : 1.0));
-        system_step(s);
+        dem_system_step(s);
         if (overlap(s) <= 0.0) bonded = 0;
         if (overlap(s) < -0.1 * RI) break;   /* well apart: stop before they leave the domain */
     }
@@ -138,7 +138,7 @@ int main(void)
     check_true("2. pull 0.98 F_po (ramp 0.2 s, hold 0.1 s): stays bonded", held);
     const double delta_098 = root(0.98 * F_po, delta_star, delta_0);
     check_rel("2. overlap under 0.98 F_po = stable root of g = P [m]", delta_end, delta_098, 0.02);
-    system_free(&s);
+    dem_system_free(&s);
 
     /* 3. 1.02 F_po */
     pair_setup(&s, 0.3 * delta_0);
@@ -146,7 +146,7 @@ int main(void)
     const int held_102 = pull(&s, 1.02 * F_po, 0.2, 0.1, &delta_end);
     printf("   1.02 F_po: overlap at the end %.3g m\n", delta_end);
     check_true("3. pull 1.02 F_po (ramp 0.2 s, hold 0.1 s): separates", !held_102 && delta_end < 0.0);
-    system_free(&s);
+    dem_system_free(&s);
 
     /* 4. slow ramp through the pull-off force */
     pair_setup(&s, 0.3 * delta_0);
@@ -158,11 +158,11 @@ int main(void)
     for (long k = 1; k <= n; k++) {
         const double P = F_po * (0.9 + 0.2 * (double)k / n);
         set_pull(&s, P);
-        system_step(&s);
+        dem_system_step(&s);
         if (overlap(&s) <= 0.0) { P_open = P; break; }
     }
     check_rel("4. pull at which the contact opens (slow ramp) = F_po [N]", P_open, F_po, 0.02);
-    system_free(&s);
+    dem_system_free(&s);
 
     printf("(%.1f s)\n", (double)(clock() - t0) / CLOCKS_PER_SEC);
     return finish("test_cohesion");

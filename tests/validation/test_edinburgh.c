@@ -176,18 +176,18 @@ static void trace_push(trace *t, double d, double f)
 static void pair_system(dem_system *s, const edinburgh_params *mp)
 {
     make_system(s, E_MOD, NU, RHO, 1.0, 0.0, normal_edinburgh, tangential_none, 0.01);
-    materials_set_model_values(&s->materials, 0, 0, SLOT_NORMAL, mp, sizeof *mp);
+    dem_materials_set_model_values(&s->materials, 0, 0, SLOT_NORMAL, mp, sizeof *mp);
     s->nlist.skin = 0.5 * RAD;   /* more than any overlap used: the list is built once */
     add_sphere(s, 0, 0, 0, 0, 0, 0, RAD);
     add_sphere(s, 2.0 * RAD, 0, 0, 0, 0, 0, RAD);
-    system_setup(s);
+    dem_system_setup(s);
 }
 
 /* normal force (+ repulsive) at overlap delta */
 static double pair_force(dem_system *s, double delta)
 {
     s->p.x[1][0] = 2.0 * RAD - delta;
-    system_compute_forces(s);
+    dem_system_compute_forces(s);
     return 0.5 * (s->p.f[1][0] - s->p.f[0][0]);
 }
 
@@ -310,7 +310,7 @@ static void trace_main(void)
     const double w_path = trapezoid(&t, 0, e4);
     const double w_path_ref = ref_work_load(&m, d2) - ref_work_unload(&m, d2) + ref_work_tension(&m, d2);
     check_rel("energy: trace 1 whole path vs closed-form area", w_path, w_path_ref, 0.02);
-    system_free(&s);
+    dem_system_free(&s);
 
     /* energy: a single cycle 0 -> delta1 -> 0 */
     pair_system(&s, &mp);
@@ -322,7 +322,7 @@ static void trace_main(void)
     const double wl = ref_work_load(&m, d1), wu = ref_work_unload(&m, d1), wt = ref_work_tension(&m, d1);
     printf("   cycle to delta1: loading work %.6g J, returned %.6g J, tensile work %.6g J\n", wl, wu, wt);
     check_rel("energy: cycle 0 -> delta1 -> 0 vs closed-form area", w_cyc, wl - wu + wt, 0.02);
-    system_free(&s);
+    dem_system_free(&s);
     free(t.d); free(t.f); free(c.d); free(c.f);
 }
 
@@ -370,7 +370,7 @@ static void trace_limit(void)
     const double w = trapezoid(&t, 0, e2);
     const double wr = ref_work_load(&m, d1) - ref_work_unload(&m, d1) + ref_work_tension(&m, d1);
     check_rel("energy: trace 2 cycle vs closed-form area", w, wr, 0.02);
-    system_free(&s);
+    dem_system_free(&s);
     free(t.d); free(t.f);
 }
 
@@ -393,7 +393,7 @@ static void trace_hertz(void)
     printf("\n4. Hertz limit kappa21=1.0001 gamma_s=0 d_ex=1.5 e=1, pair, delta_max=%g m\n", d1);
     check_rel("hertz limit: loading 4/3 Y* sqrt(R*) delta^1.5 (worst)", fl, rl, 0.01);
     check_rel("hertz limit: unloading, delta >= 0.1 delta_max (worst)", fu, ru, 0.01);
-    system_free(&s);
+    dem_system_free(&s);
 }
 
 /* ---------- impacts ---------- */
@@ -407,7 +407,7 @@ static impact_out edin_impact(const edinburgh_params *mp, double e, int wall, do
 {
     dem_system s;
     make_system(&s, E_MOD, NU, RHO, e, 0.0, normal_edinburgh, tangential_none, 0.01);
-    materials_set_model_values(&s.materials, 0, 0, SLOT_NORMAL, mp, sizeof *mp);
+    dem_materials_set_model_values(&s.materials, 0, 0, SLOT_NORMAL, mp, sizeof *mp);
     s.models.fn_floor = -INFINITY;
     s.dt = t_scale / steps;
     s.nlist.skin = 0.05 * RAD;
@@ -418,7 +418,7 @@ static impact_out edin_impact(const edinburgh_params *mp, double e, int wall, do
         add_sphere(&s, 0, 0, -RAD, 0, 0, 0.5 * v, RAD);
         add_sphere(&s, 0, 0, RAD, 0, 0, -0.5 * v, RAD);
     }
-    system_setup(&s);
+    dem_system_setup(&s);
     impact_out o = {0};
     o.dt = s.dt;
     int touched = 0;
@@ -426,7 +426,7 @@ static impact_out edin_impact(const edinburgh_params *mp, double e, int wall, do
     const long max_steps = (long)(100 * steps);
     long k;
     for (k = 0; k < max_steps; k++) {
-        system_step(&s);
+        dem_system_step(&s);
         const double overlap = wall ? RAD - s.p.x[0][2] : 2.0 * RAD - (s.p.x[1][2] - s.p.x[0][2]);
         if (overlap > o.max_overlap) o.max_overlap = overlap;
         if (overlap > 0) { touched = 1; in_contact++; }
@@ -435,7 +435,7 @@ static impact_out edin_impact(const edinburgh_params *mp, double e, int wall, do
     o.captured = k == max_steps;
     o.restitution = o.captured ? 0.0 : (wall ? s.p.v[0][2] : s.p.v[1][2] - s.p.v[0][2]) / v;
     o.contact_time = in_contact * s.dt;
-    system_free(&s);
+    dem_system_free(&s);
     return o;
 }
 

@@ -21,7 +21,7 @@ static double elastic_energy(const dem_system *s)
         }
         for (int k = 0; k < s->nwalls; k++) {
             double gap, en[3];
-            if (wall_gap(&s->walls[k], p->x[i], p->radius[i], &gap, en) && gap < 0)
+            if (dem_wall_gap(&s->walls[k], p->x[i], p->radius[i], &gap, en) && gap < 0)
                 u += 8.0 / 15.0 * materials_pair(&s->materials, 0, 0)->Y_eff * sqrt(p->radius[i]) * pow(-gap, 2.5);
         }
     }
@@ -57,21 +57,21 @@ int main(void)
     const double t_contact = 2.87 * pow(0.25 * m * m / (0.5 * rmin * Y * Y * 2 * sqrt(3.0) * vmax), 0.2);
     s.dt = t_contact / 50.0;
     s.nlist.skin = 0.1e-3;
-    system_setup(&s);
-    const double e0 = system_kinetic_energy(&s) + elastic_energy(&s);
+    dem_system_setup(&s);
+    const double e0 = dem_system_kinetic_energy(&s) + elastic_energy(&s);
     double worst = 0.0;
     for (long k = 1; k <= 100000; k++) {
-        system_step(&s);
+        dem_system_step(&s);
         if (k % 5000 == 0) {
-            const double e = system_kinetic_energy(&s) + elastic_energy(&s);
+            const double e = dem_system_kinetic_energy(&s) + elastic_energy(&s);
             worst = fmax(worst, fabs(e - e0) / e0);
         }
     }
     printf("dt = %.3g s (contact time %.3g s), %ld neighbour builds\n", s.dt, t_contact, s.nlist.builds);
     check_true("neighbour list was rebuilt during the run", s.nlist.builds > 10);
-    check_rel("total energy after 1e5 steps", system_kinetic_energy(&s) + elastic_energy(&s), e0, 1e-4);
+    check_rel("total energy after 1e5 steps", dem_system_kinetic_energy(&s) + elastic_energy(&s), e0, 1e-4);
     printf("largest relative energy deviation seen (every 5000 steps): %.3g\n", worst);
     check_true("energy deviation below 1e-4 throughout", worst < 1e-4);
-    system_free(&s);
+    dem_system_free(&s);
     return finish("test_energy");
 }

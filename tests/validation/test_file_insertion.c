@@ -1,4 +1,4 @@
-/* File insertion (dem/src/insert_file.c), through case_read as demRun reads a case. Round trips,
+/* File insertion (dem/src/insert_file.c), through dem_case_read as demRun reads a case. Round trips,
  * compared exactly (==): 400 spheres with random positions, diameters, velocities and materials
  * written with %.17g
  *  1. as 8 columns (x y z d vx vy vz material), with '#' and '//' comments, blank lines and
@@ -33,8 +33,8 @@ static void read_case(dem_system *s, const char *dir, const char *entry)
     snprintf(text, sizeof text, head, entry);
     write_text(dir, "constant/demProperties", text);
     run_settings rs;
-    system_init(s);
-    case_read(dir, s, &rs, 0);
+    dem_system_init(s);
+    dem_case_read(dir, s, &rs, 0);
 }
 
 static void make_truth(truth *t)
@@ -84,7 +84,7 @@ int main(void)
         check_true("columns: diameters exact", d_eq);
         check_true("columns: velocities exact", v_eq);
         check_true("columns: materials by name", m_eq);
-        system_free(&s);
+        dem_system_free(&s);
     }
     for (int variant = 0; variant < 2; variant++) { /* 2. vectorField */
         snprintf(path, sizeof path, variant ? "%s/cloud" : "%s/constant/cloud", dir);
@@ -116,7 +116,7 @@ int main(void)
                            : "vectorField with FoamFile header and count: positions exact", x_eq);
         check_true(variant ? "vectorField, no header: d, v, material from the entry"
                            : "vectorField with header: d, v, material from the entry", rest);
-        system_free(&s);
+        dem_system_free(&s);
     }
     { /* 3. mixed column counts */
         snprintf(path, sizeof path, "%s/constant/mixed.dat", dir);
@@ -143,7 +143,7 @@ int main(void)
             ok &= 2 * s.p.radius[k] == d && s.p.type[k] == m;
         }
         check_true("3, 4, 7 and 8 columns in one file: given columns exact, the rest from the entry", ok);
-        system_free(&s);
+        dem_system_free(&s);
     }
     remove_case(dir);
     return finish("test_file_insertion");

@@ -25,11 +25,11 @@ static impact_result impact(double E, double nu, double rho, double r, double v,
         add_sphere(&s, -r - 1e-9, 0, 0, 0.5 * v, 0, 0, r);
         add_sphere(&s, r + 1e-9, 0, 0, -0.5 * v, 0, 0, r);
     }
-    system_setup(&s);
+    dem_system_setup(&s);
     impact_result res = {0, 0, 0, 0};
     long in_contact = 0;
     for (long k = 0; k < 100000000; k++) {
-        system_step(&s);
+        dem_system_step(&s);
         const double delta = wall ? r - (s.p.x[0][2] + r) : 2 * r - (s.p.x[1][0] - s.p.x[0][0]);
         if (delta > 0) {
             in_contact++;
@@ -39,7 +39,7 @@ static impact_result impact(double E, double nu, double rho, double r, double v,
     }
     res.t_contact = in_contact * dt;
     res.restitution = wall ? s.p.v[0][2] / v : (s.p.v[1][0] - s.p.v[0][0]) / v;
-    system_free(&s);
+    dem_system_free(&s);
     return res;
 }
 

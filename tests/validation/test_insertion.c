@@ -64,19 +64,19 @@ int main(void)
         dem_system s = fresh();
         insertion ins = box_region(0.1);
         ins.number = N; ins.dist = SIZE_CONSTANT; ins.d_value = 2e-3;
-        check_true("constant: the requested number inserted", insertion_run(&s, &ins) == N && s.p.n == N);
+        check_true("constant: the requested number inserted", dem_insertion_run(&s, &ins) == N && s.p.n == N);
         int equal = 1;
         for (int i = 0; i < s.p.n; i++) equal &= 2 * s.p.radius[i] == 2e-3;
         check_true("constant: every diameter equal to the value", equal);
         check_true("constant: no overlaps, all inside the box", !overlaps_or_outside(&s, &ins));
-        system_free(&s);
+        dem_system_free(&s);
     }
     { /* uniform */
         dem_system s = fresh();
         insertion ins = box_region(0.1);
         const double a = 1e-3, b = 3e-3;
         ins.number = N; ins.dist = SIZE_UNIFORM; ins.d_min = a; ins.d_max = b;
-        insertion_run(&s, &ins);
+        dem_insertion_run(&s, &ins);
         double mean, std;
         stats(&s, &mean, &std);
         const double sd = (b - a) / sqrt(12.0);
@@ -85,7 +85,7 @@ int main(void)
         /* standard error of a sample std: sd sqrt((kurtosis - 1) / (4 N)), kurtosis 1.8 */
         check_rel("uniform: standard deviation (3 standard errors)", std, sd, 3 * sqrt(0.8 / (4.0 * N)));
         check_true("uniform: no overlaps, all inside the box", !overlaps_or_outside(&s, &ins));
-        system_free(&s);
+        dem_system_free(&s);
     }
     { /* normal truncated at +-1.5 sigma, in a cylinder */
         dem_system s = fresh();
@@ -94,7 +94,7 @@ int main(void)
         const double mu = 2e-3, sigma = 0.4e-3, z = 1.5;
         ins.number = N; ins.dist = SIZE_NORMAL; ins.d_mean = mu; ins.d_std = sigma;
         ins.d_min = mu - z * sigma; ins.d_max = mu + z * sigma;
-        insertion_run(&s, &ins);
+        dem_insertion_run(&s, &ins);
         double mean, std;
         stats(&s, &mean, &std);
         const double phi = exp(-0.5 * z * z) / sqrt(2 * M_PI), Phi = 0.5 * (1 + erf(z / sqrt(2.0)));
@@ -103,7 +103,7 @@ int main(void)
         /* kurtosis of the truncated normal is below 3: standard error below sd sqrt(2 / (4 N)) */
         check_rel("normal truncated: standard deviation (3 standard errors)", std, sd, 3 * sqrt(2.0 / (4.0 * N)));
         check_true("normal truncated: no overlaps, all inside the cylinder", !overlaps_or_outside(&s, &ins));
-        system_free(&s);
+        dem_system_free(&s);
     }
     { /* discrete, by solid fraction */
         dem_system s = fresh();
@@ -111,7 +111,7 @@ int main(void)
         double values[2] = {1e-3, 3e-3}, weights[2] = {0.7, 0.3};
         ins.solid_fraction = 0.15; ins.dist = SIZE_DISCRETE; ins.ndiscrete = 2;
         ins.d_values = values; ins.d_weights = weights;
-        insertion_run(&s, &ins);
+        dem_insertion_run(&s, &ins);
         int small = 0;
         double volume = 0;
         for (int i = 0; i < s.p.n; i++) {
@@ -126,7 +126,7 @@ int main(void)
         check_true("discrete: solid fraction reached, by less than one particle's volume over",
                    volume >= target && volume - target < last);
         check_true("discrete: no overlaps, all inside the box", !overlaps_or_outside(&s, &ins));
-        system_free(&s);
+        dem_system_free(&s);
     }
     return finish("test_insertion");
 }

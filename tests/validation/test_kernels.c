@@ -39,14 +39,14 @@ static void set_all_params(dem_system *s)
     material_table *t = &s->materials;
     const contact_models *m = &s->models;
     if (m->normal == normal_hooke) SET_MODEL_CASE(s, SLOT_NORMAL, hooke);
-    if (m->normal == normal_edinburgh) materials_set_model_values(t, 0, 0, SLOT_NORMAL, &edinburgh, sizeof edinburgh);
-    if (m->normal == normal_jkr) materials_set_model_values(t, 0, 0, SLOT_NORMAL, &jkr, sizeof jkr);
-    if (m->normal == normal_dmt) materials_set_model_values(t, 0, 0, SLOT_NORMAL, &dmt, sizeof dmt);
-    if (m->cohesion == cohesion_sjkr) materials_set_model_values(t, 0, 0, SLOT_COHESION, &sjkr, sizeof sjkr);
-    if (m->rolling == rolling_cdt) materials_set_model_values(t, 0, 0, SLOT_ROLLING, &cdt, sizeof cdt);
-    if (m->rolling == rolling_epsd) materials_set_model_values(t, 0, 0, SLOT_ROLLING, &epsd, sizeof epsd);
+    if (m->normal == normal_edinburgh) dem_materials_set_model_values(t, 0, 0, SLOT_NORMAL, &edinburgh, sizeof edinburgh);
+    if (m->normal == normal_jkr) dem_materials_set_model_values(t, 0, 0, SLOT_NORMAL, &jkr, sizeof jkr);
+    if (m->normal == normal_dmt) dem_materials_set_model_values(t, 0, 0, SLOT_NORMAL, &dmt, sizeof dmt);
+    if (m->cohesion == cohesion_sjkr) dem_materials_set_model_values(t, 0, 0, SLOT_COHESION, &sjkr, sizeof sjkr);
+    if (m->rolling == rolling_cdt) dem_materials_set_model_values(t, 0, 0, SLOT_ROLLING, &cdt, sizeof cdt);
+    if (m->rolling == rolling_epsd) dem_materials_set_model_values(t, 0, 0, SLOT_ROLLING, &epsd, sizeof epsd);
     if (m->rolling == rolling_cdt_jkr) {
-        materials_set_model_values(t, 0, 0, SLOT_ROLLING, &cdt_jkr, sizeof cdt_jkr);
+        dem_materials_set_model_values(t, 0, 0, SLOT_ROLLING, &cdt_jkr, sizeof cdt_jkr);
         SET_MODEL_CASE(s, SLOT_ROLLING, cdt_jkr_c);
     }
     if (m->surface == surface_roughness) SET_MODEL_CASE(s, SLOT_SURFACE, rough);
@@ -73,8 +73,8 @@ static state run(const int ids[SLOT_COUNT], int wall, int generic)
         const int j = add_sphere(&s, R0 + R1 + 1e-5, 4e-4, 1e-4, -0.25, 0.0, 0.02, R1);
         s.p.omega[i][2] = 80.0; s.p.omega[j][1] = -60.0; s.p.omega[j][0] = 20.0;
     }
-    system_setup(&s);
-    for (int k = 0; k < NSTEPS; k++) system_step(&s);
+    dem_system_setup(&s);
+    for (int k = 0; k < NSTEPS; k++) dem_system_step(&s);
     state out = {.n = s.p.n};
     for (int i = 0; i < s.p.n; i++) {
         const int q = (int)s.p.id[i];
@@ -84,7 +84,7 @@ static state run(const int ids[SLOT_COUNT], int wall, int generic)
             out.w[q][d] = s.p.omega[i][d];
         }
     }
-    system_free(&s);
+    dem_system_free(&s);
     return out;
 }
 
@@ -152,21 +152,21 @@ int main(void)
                     for (ids[4] = 0; ids[4] < counts[4]; ids[4]++) {
                         combos++;
                         char name[128];
-                        snprintf(name, sizeof name, "%s/%s/%s/%s/%s", contact_model_get(0, ids[0])->name,
-                                 contact_model_get(1, ids[1])->name, contact_model_get(2, ids[2])->name,
-                                 contact_model_get(3, ids[3])->name, contact_model_get(4, ids[4])->name);
+                        snprintf(name, sizeof name, "%s/%s/%s/%s/%s", dem_contact_model_get(0, ids[0])->name,
+                                 dem_contact_model_get(1, ids[1])->name, dem_contact_model_get(2, ids[2])->name,
+                                 dem_contact_model_get(3, ids[3])->name, dem_contact_model_get(4, ids[4])->name);
                         /* history layout: all antisymmetric parts lead */
                         contact_models m = {.normal = ids[0], .tangential = ids[1], .cohesion = ids[2], .rolling = ids[3], .surface = ids[4]};
                         int anti = 0;
                         for (int slot = 0; slot < SLOT_COUNT; slot++) {
-                            const contact_model *d = contact_model_get(slot, ids[slot]);
+                            const contact_model *d = dem_contact_model_get(slot, ids[slot]);
                             if (d->history_antisymmetric != 0 && d->history_antisymmetric != d->history) bad_layout++;
                             anti += d->history_antisymmetric;
                         }
-                        if (anti != contact_history_antisymmetric(&m)) {
+                        if (anti != dem_contact_history_antisymmetric(&m)) {
                             bad_layout++;
                             printf("history layout: %s antisymmetric %d, layout gives %d\n", name, anti,
-                                   contact_history_antisymmetric(&m));
+                                   dem_contact_history_antisymmetric(&m));
                         }
                         const state pg = run(ids, 0, 1), wg = run(ids, 1, 1);
                         if (!finite_state(&pg) || !finite_state(&wg)) {

@@ -1,4 +1,4 @@
-/* Lattice insertion (dem/src/insert_lattice.c), through case_read as demRun reads a case:
+/* Lattice insertion (dem/src/insert_lattice.c), through dem_case_read as demRun reads a case:
  *  1. DPMFoam's Goldschmidt bed: region (-0.0075 -0.075 0) .. (0.0075 0.075 0.297), spacing
  *     0.003 m gives 24,750 points equal, in order, to x = -0.006 + 0.003 i, y = -0.0735 + 0.003 j,
  *     z = 0.0015 + 0.003 k (i fastest; 1e-12 m), and equal to the tutorial's own
@@ -34,8 +34,8 @@ static void read_case(dem_system *s, const char *gravity, const char *entry, con
     snprintf(text, sizeof text, head, gravity, entry, diameter);
     write_text(dir, "constant/demProperties", text);
     run_settings rs;
-    system_init(s);
-    case_read(dir, s, &rs, 0);
+    dem_system_init(s);
+    dem_case_read(dir, s, &rs, 0);
     remove_case(dir);
 }
 
@@ -77,8 +77,8 @@ static void openfoam_file(const dem_system *lattice)
     write_text(dir, "constant/demProperties", text);
     dem_system s;
     run_settings rs;
-    system_init(&s);
-    case_read(dir, &s, &rs, 0);
+    dem_system_init(&s);
+    dem_case_read(dir, &s, &rs, 0);
     remove_case(dir);
     double worst = 0.0;
     const int same_n = s.p.n == lattice->p.n;
@@ -87,7 +87,7 @@ static void openfoam_file(const dem_system *lattice)
     printf("kinematicCloudPositions: %d positions, largest difference from the lattice %.3g m\n", s.p.n, worst);
     check_true("DPMFoam's own file: 24,750 positions", s.p.n == 24750);
     check_true("DPMFoam's own file: the lattice's points, in order (1e-12 m)", same_n && worst <= 1e-12);
-    system_free(&s);
+    dem_system_free(&s);
 }
 
 int main(void)
@@ -106,7 +106,7 @@ int main(void)
         }
         check_true("Goldschmidt lattice: diameter 0.0025 m, material glass, at rest", d_ok && v_ok);
         openfoam_file(&s);
-        system_free(&s);
+        dem_system_free(&s);
     }
     { /* 2. from the bottom */
         char entry[512];
@@ -118,7 +118,7 @@ int main(void)
         check_true("number 1000, gravity -z: 1000 points, DPMFoam's first 1000 (1e-12 m)",
                    s.p.n == 1000 && dpm_error(&s) <= 1e-12);
         check_true("number 1000, gravity -z: the lowest four layers (z <= 0.0105 m)", zmax < 0.0105 + 1e-12);
-        system_free(&s);
+        dem_system_free(&s);
         snprintf(entry, sizeof entry, "%s number 600;", dpm_entry);
         read_case(&s, "(0 -9.81 0)", entry, d25);
         int first = 0, second = 0, other = 0;
@@ -130,7 +130,7 @@ int main(void)
         printf("number 600, gravity -y: %d in the lowest y layer, %d in the next, %d elsewhere\n", first, second, other);
         check_true("number 600, gravity -y: 495 + 105 in the two lowest y layers", s.p.n == 600 && first == 495 &&
                    second == 105 && other == 0);
-        system_free(&s);
+        dem_system_free(&s);
     }
     { /* 3. vector spacing */
         dem_system s;
@@ -147,7 +147,7 @@ int main(void)
                 worst = fmax(worst, fabs(s.p.x[k][d] - (mid[d] + (idx[d] - 0.5 * (n[d] - 1)) * sp[d])));
         }
         check_true("spacing (0.003 0.004 0.005): 5 x 37 x 20 centred points (1e-12 m)", s.p.n == 3700 && worst <= 1e-12);
-        system_free(&s);
+        dem_system_free(&s);
     }
     { /* 4. cylinder */
         dem_system s;
@@ -171,7 +171,7 @@ int main(void)
                 }
         printf("cylinder: %d points, %d expected, %d of them found\n", s.p.n, expected, found);
         check_true("cylinder: the lattice points whose sphere is inside, exactly", s.p.n == expected && found == expected && expected > 0);
-        system_free(&s);
+        dem_system_free(&s);
     }
     { /* 5. size distribution up to the spacing */
         dem_system s;
@@ -186,7 +186,7 @@ int main(void)
         }
         printf("uniform 0.002-0.003 m at spacing 0.003 m: diameters %.4g .. %.4g m\n", dmin, dmax);
         check_true("uniform diameters up to the spacing: 24,750, all in [0.002, 0.003] m", s.p.n == 24750 && in_range);
-        system_free(&s);
+        dem_system_free(&s);
     }
     return finish("test_lattice");
 }

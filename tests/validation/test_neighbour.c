@@ -60,10 +60,10 @@ static void gas(int periodic)
     s.dt = 2e-6;
     s.nlist.skin = 0.2e-3;
     s.nlist.sort_interval = 3;
-    system_setup(&s);
+    dem_system_setup(&s);
     int worst_missing = 0, worst_dup = 0;
     for (int k = 0; k < 20000; k++) {
-        system_step(&s);
+        dem_system_step(&s);
         if (k % 500 == 0) {
             int dup;
             const int missing = count_missing(&s, &dup);
@@ -79,7 +79,7 @@ static void gas(int periodic)
     check_true(what, worst_missing == 0);
     snprintf(what, sizeof what, "%s: no pair listed twice", periodic ? "periodic" : "walled");
     check_true(what, worst_dup == 0);
-    system_free(&s);
+    dem_system_free(&s);
 }
 
 /* A sphere pressed onto another and sliding slowly sideways: the tangential spring
@@ -102,8 +102,8 @@ static void history_survives(int flip)
     s.dt = 1e-6;
     s.nlist.skin = 0.2e-3;
     s.nlist.sort_interval = flip ? 0 : 1;
-    system_setup(&s);
-    for (int k = 0; k < 40; k++) system_step(&s);
+    dem_system_setup(&s);
+    for (int k = 0; k < 40; k++) dem_system_step(&s);
     /* find the pair and its history by ids 10 and 11, as seen from 10; the contact sticks
      * (kt |s| well below mu Fn), so its history is the spring's own and not reset by Coulomb */
     double before[3] = {0, 0, 0}, after[3] = {0, 0, 0};
@@ -113,7 +113,7 @@ static void history_survives(int flip)
             s.nlist.builds = 0;
             s.nlist.sort_interval = 1;
             for (int i = 0; i < s.p.n; i++) s.nlist.x_at_build[i][0] += 1.0;
-            system_step(&s);
+            dem_system_step(&s);
         }
         for (int i = 0; i < s.p.n; i++)
             for (int k = s.nlist.start[i]; k < s.nlist.start[i + 1]; k++) {
@@ -133,7 +133,7 @@ static void history_survives(int flip)
     snprintf(what, sizeof what, "tangential history after rebuild + sort%s", tag);
     check_rel(what, after[0], before[0], 0.05);
     check_true("the forced rebuild sorted", s.nlist.sorts >= 1);
-    system_free(&s);
+    dem_system_free(&s);
 }
 
 int main(void)

@@ -85,9 +85,9 @@ static void set_models(dem_system *s, enum rolling_model model)
     const cdt_params cdt = {MU_R};
     const epsd_params epsd = {MU_R, ETA_R};
     const cdt_jkr_params jkr = {W_ADH, ETA_ADH};
-    if (model == rolling_cdt) materials_set_model_values(&s->materials, 0, 0, SLOT_ROLLING, &cdt, sizeof cdt);
-    if (model == rolling_epsd) materials_set_model_values(&s->materials, 0, 0, SLOT_ROLLING, &epsd, sizeof epsd);
-    if (model == rolling_cdt_jkr) materials_set_model_values(&s->materials, 0, 0, SLOT_ROLLING, &jkr, sizeof jkr);
+    if (model == rolling_cdt) dem_materials_set_model_values(&s->materials, 0, 0, SLOT_ROLLING, &cdt, sizeof cdt);
+    if (model == rolling_epsd) dem_materials_set_model_values(&s->materials, 0, 0, SLOT_ROLLING, &epsd, sizeof epsd);
+    if (model == rolling_cdt_jkr) dem_materials_set_model_values(&s->materials, 0, 0, SLOT_ROLLING, &jkr, sizeof jkr);
     s->models.rolling = model;
 }
 
@@ -97,7 +97,7 @@ static double wall_mu_r(enum rolling_model model)
     dem_system s;
     make_system(&s, E, NU, RHO, 0.5, 0.5, normal_hertz, tangential_history, 0.1);
     const double mu_r = model == rolling_cdt_jkr ? mu_r_jkr(materials_pair(&s.materials, 0, 0)->Y_eff, RAD) : MU_R;
-    system_free(&s);
+    dem_system_free(&s);
     return mu_r;
 }
 
@@ -117,7 +117,7 @@ static void wall_system(dem_system *s, enum rolling_model model, double th, doub
     s->p.omega[i][1] = v0 / (RAD - 0.5 * delta);
     s->dt = 1e-5;   /* ~100 steps per normal and tangential oscillation period */
     s->nlist.skin = 1e-4;
-    system_setup(s);
+    dem_system_setup(s);
 }
 
 static void level_rolling(enum rolling_model model)
@@ -130,7 +130,7 @@ static void level_rolling(enum rolling_model model)
     const int n_t0 = (int)lround(0.01 / s.dt);
     double slip = 0.0, x_first_stop = NAN, x_t0 = NAN, v_t0 = NAN;
     for (int k = 0; k < n_end; k++) {
-        system_step(&s);
+        dem_system_step(&s);
         if (k == n_half) slip = s.p.v[0][0] - (RAD - 0.5 * (RAD - s.p.x[0][2])) * s.p.omega[0][1];
         if (k == n_t0 - 1) { x_t0 = s.p.x[0][0]; v_t0 = s.p.v[0][0]; }
         if (isnan(x_first_stop) && s.p.v[0][0] <= 0.0) x_first_stop = s.p.x[0][0];
@@ -144,7 +144,7 @@ static void level_rolling(enum rolling_model model)
     check_rel(what, s.p.x[0][0] - x_t0, 7.0 * v_t0 * v_t0 / (10.0 * mu_r * G), 0.002);
     snprintf(what, sizeof what, "%s level: slip |v - R_c w| / v0 at t_stop/2 (bound 1e-3)", names[model]);
     check_below(what, slip / V0, 1e-3);
-    system_free(&s);
+    dem_system_free(&s);
 }
 
 static void incline(enum rolling_model model)
@@ -161,7 +161,7 @@ static void incline(enum rolling_model model)
         const int n05 = (int)lround(0.5 / s.dt);
         double v_first = 0.0, v_last = 0.0, x05 = NAN;
         for (int k = 0; k < n; k++) {
-            system_step(&s);
+            dem_system_step(&s);
             const double v = sqrt(s.p.v[0][0] * s.p.v[0][0] + s.p.v[0][2] * s.p.v[0][2]);
             if (k < window) v_first = fmax(v_first, v);
             if (k >= n - window) v_last = fmax(v_last, v);
@@ -182,7 +182,7 @@ static void incline(enum rolling_model model)
             check_below("epsd incline at rest: max|v| last / first 0.1 s (bound 1e-3)", v_last / v_first, 1e-3);
             check_below("epsd incline at rest: |x(1 s) - x(0.5 s)| [m] (bound 1e-9)", dx - x05, 1e-9);
         }
-        system_free(&s);
+        dem_system_free(&s);
     }
 }
 
@@ -208,10 +208,10 @@ static void pair_torques(enum rolling_model model)
     s.p.omega[1][0] = -15.0; s.p.omega[1][1] = 3.0; s.p.omega[1][2] = 30.0;
     s.dt = 5e-7;
     s.nlist.skin = 1e-4;
-    system_setup(&s);
+    dem_system_setup(&s);
     double worst = 0.0, smallest = INFINITY;
     for (int k = 0; k < 50; k++) {
-        system_step(&s);
+        dem_system_step(&s);
         const double *ti = s.p.torque[index_of(&s, 0)], *tj = s.p.torque[index_of(&s, 1)];
         const double sum[3] = {ti[0] + tj[0], ti[1] + tj[1], ti[2] + tj[2]};
         worst = fmax(worst, norm3(sum) / norm3(ti));
@@ -223,7 +223,7 @@ static void pair_torques(enum rolling_model model)
     check_true(what, smallest > 0.0 && isfinite(smallest));
     snprintf(what, sizeof what, "%s pair: |M_i + M_j| / |M_i| (bound 1e-12)", names[model]);
     check_below(what, worst, 1e-12);
-    system_free(&s);
+    dem_system_free(&s);
 }
 
 static void angular_momentum(const dem_system *s, double L[3])
@@ -249,12 +249,12 @@ static void pair_collision(enum rolling_model model)
     s.p.omega[1][0] = -60.0; s.p.omega[1][1] = 30.0; s.p.omega[1][2] = 10.0;
     s.dt = 5e-7;
     s.nlist.skin = 1e-4;
-    system_setup(&s);
+    dem_system_setup(&s);
     double L0[3], L[3];
     angular_momentum(&s, L0);
     double worst = 0.0, overlap_max = 0.0;
     for (int k = 0; k < 2000; k++) {
-        system_step(&s);
+        dem_system_step(&s);
         angular_momentum(&s, L);
         const double d[3] = {L[0] - L0[0], L[1] - L0[1], L[2] - L0[2]};
         worst = fmax(worst, norm3(d) / norm3(L0));
@@ -267,7 +267,7 @@ static void pair_collision(enum rolling_model model)
     check_true(what, overlap_max > 1e-6);
     snprintf(what, sizeof what, "%s oblique collision: |L - L0| / |L0| (bound 1e-10)", names[model]);
     check_below(what, worst, 1e-10);
-    system_free(&s);
+    dem_system_free(&s);
 }
 
 /* cdtJkr torque on sphere id 0 (w = (30, 40, 0) rad/s, normal along x) against sphere id 1 */
@@ -284,13 +284,13 @@ static void jkr_torque(int torsion, double M[3], double *closed_form)
     s.p.omega[0][0] = 30.0; s.p.omega[0][1] = 40.0;
     s.dt = 5e-7;
     s.nlist.skin = 1e-4;
-    system_setup(&s);   /* forces of the initial state */
+    dem_system_setup(&s);   /* forces of the initial state */
     const double *t = s.p.torque[index_of(&s, 0)];
     M[0] = t[0]; M[1] = t[1]; M[2] = t[2];
     const double Y = materials_pair(&s.materials, 0, 0)->Y_eff, r_eff = 0.5 * RAD;
     const double fn = 4.0 / 3.0 * Y * sqrt(r_eff * overlap) * overlap;   /* kn delta, eq. 7 */
     *closed_form = mu_r_jkr(Y, r_eff) * fn * r_eff;                       /* eq. 8 */
-    system_free(&s);
+    dem_system_free(&s);
 }
 
 static void torsion(void)

@@ -65,7 +65,7 @@
 
 static wall *add_wall(dem_system *s)
 {
-    wall *w = walls_add(s);
+    wall *w = dem_walls_add(s);
     memset(w, 0, sizeof *w);
     snprintf(w->name, sizeof w->name, "wall%d", s->nwalls);
     return w;
@@ -132,10 +132,10 @@ static void small_bed(enum surface_model surface, roughness_case rp, int nsteps,
                    0.6 * rng_uniform(&g) - 0.3, 0.6 * rng_uniform(&g) - 0.3, 0.6 * rng_uniform(&g) - 0.3, r);
     }
     s.dt = 2e-6;
-    system_setup(&s);
+    dem_system_setup(&s);
     int pairs = 0, walls = 0;
     for (int k = 0; k < nsteps; k++) {
-        system_step(&s);
+        dem_system_step(&s);
         if (k % 100 == 99) {   /* count contacts now and then, to know the bed was busy */
             for (int i = 0; i < s.p.n; i++) {
                 for (int j = i + 1; j < s.p.n; j++) {
@@ -151,7 +151,7 @@ static void small_bed(enum surface_model surface, roughness_case rp, int nsteps,
     gather(&s, out);
     if (pair_contacts) *pair_contacts = pairs;
     if (wall_contacts) *wall_contacts = walls;
-    system_free(&s);
+    dem_system_free(&s);
 }
 
 static void zero_scatter(void)
@@ -204,21 +204,21 @@ static void impacts(roughness_case rp, int reversed, double (*vout)[3], long *st
         const int k = reversed ? NIMP - 1 - m : m;   /* id k always at the same place */
         const double pos[3] = {(k % NGRID - 49.5) * IMP_SPACING, (k / NGRID - 49.5) * IMP_SPACING, z0};
         const double vel[3] = {0.0, 0.0, -IMP_V};
-        particles_add(&s.p, pos, vel, IMP_R, RHO, 0, k);
+        dem_particles_add(&s.p, pos, vel, IMP_R, RHO, 0, k);
     }
     s.next_id = NIMP;
     s.dt = 1e-6;
-    system_setup(&s);
+    dem_system_setup(&s);
     *start = -1;
     for (int k = 0; k < 100000; k++) {
-        system_step(&s);
+        dem_system_step(&s);
         int in_contact = 0;
         for (int i = 0; i < s.p.n; i++) in_contact |= s.p.x[i][2] < IMP_R;
         if (in_contact && *start < 0) *start = s.step - 1;   /* forces of that step saw it */
         if (*start >= 0 && !in_contact) break;
     }
     for (int i = 0; i < s.p.n; i++) memcpy(vout[s.p.id[i]], s.p.v[i], sizeof vout[0]);
-    system_free(&s);
+    dem_system_free(&s);
 }
 
 /* Mean and standard deviation of atan(2 tan|dG|) over the distribution (Simpson). */
@@ -314,11 +314,11 @@ static void pair_collision(enum surface_model surface, double p0[3], double p1[3
     s.p.omega[1][0] = -100.0;
     s.dt = 1e-6;
     s.nlist.skin = 1e-3;
-    system_setup(&s);
+    dem_system_setup(&s);
     for (int q = 0; q < 3; q++) p0[q] = s.p.mass[0] * s.p.v[0][q] + s.p.mass[1] * s.p.v[1][q];
     *touched = 0;
     for (int k = 0; k < 3000; k++) {
-        system_step(&s);
+        dem_system_step(&s);
         double d2 = 0.0;
         for (int q = 0; q < 3; q++) d2 += (s.p.x[0][q] - s.p.x[1][q]) * (s.p.x[0][q] - s.p.x[1][q]);
         *touched |= d2 < 2.3e-3 * 2.3e-3;
@@ -326,7 +326,7 @@ static void pair_collision(enum surface_model surface, double p0[3], double p1[3
     for (int q = 0; q < 3; q++) p1[q] = s.p.mass[0] * s.p.v[0][q] + s.p.mass[1] * s.p.v[1][q];
     const int i0 = s.p.id[0] == 0 ? 0 : 1;
     memcpy(vfinal, s.p.v[i0], 3 * sizeof(double));
-    system_free(&s);
+    dem_system_free(&s);
 }
 
 static void momentum(void)
@@ -370,13 +370,13 @@ static void penetration(void)
                    0.2 * rng_uniform(&g) - 0.1, 0.2 * rng_uniform(&g) - 0.1, 0.2 * rng_uniform(&g) - 0.1, r);
     }
     s.dt = 4e-6;
-    system_setup(&s);
+    dem_system_setup(&s);
     double pe0 = 0.0;
     for (int i = 0; i < s.p.n; i++) pe0 += s.p.mass[i] * 9.81 * s.p.x[i][2];
     double worst_wall = 0.0, worst_any = 0.0, closest_centre = INFINITY;
     const int nsteps = 75000;
     for (int k = 0; k < nsteps; k++) {
-        system_step(&s);
+        dem_system_step(&s);
         worst_any = fmax(worst_any, s.max_overlap_seen);
         for (int i = 0; i < s.p.n; i++) {
             const double *x = s.p.x[i], r = s.p.radius[i];
@@ -394,7 +394,7 @@ static void penetration(void)
         const double v = sqrt(s.p.v[i][0] * s.p.v[i][0] + s.p.v[i][1] * s.p.v[i][1] + s.p.v[i][2] * s.p.v[i][2]);
         if (v > vmax) { vmax = v; zfast = s.p.x[i][2] / s.p.radius[i]; }
     }
-    const double ke = system_kinetic_energy(&s);
+    const double ke = dem_system_kinetic_energy(&s);
     printf("penetration: %d spheres, run to t = %.3f s of %.3f s; closest centre to a wall %.3f radii, largest "
            "wall overlap %.3f radii, largest overlap (pairs and walls) %.3f; kinetic energy %.3g J of %.3g J "
            "potential energy released; fastest sphere %.3g m/s at height %.2f radii\n",
@@ -407,7 +407,7 @@ static void penetration(void)
      * model_beds test checks that a bed with stdDev 0.1 settles. */
     printf("   (reported) kinetic energy after %.2f s: %.3g of the potential energy released\n", s.time, ke / (pe0 - pe));
     check_true("4. ran to the end without a stop", s.step == nsteps);
-    system_free(&s);
+    dem_system_free(&s);
 }
 
 int main(void)

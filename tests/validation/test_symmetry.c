@@ -63,13 +63,13 @@ static void single_sphere(const char *what, dem_system *s, const double x0[3], c
     const int i = add_sphere(s, x0[0], x0[1], x0[2], v0[0], v0[1], v0[2], 1e-3);
     for (int k = 0; k < 3; k++) s->p.omega[i][k] = w0[k];
     s->nlist.skin = 1e-5;           /* a rebuild (and its domain check) every step */
-    system_setup(s);
-    const double e0 = system_kinetic_energy(s);
+    dem_system_setup(s);
+    const double e0 = dem_system_kinetic_energy(s);
     double dmin = INFINITY;
     int touched = 0;
     for (long k = 0; k < nsteps; k++) {
-        system_step(s);
-        neighbour_rebuild(s);       /* the domain check, also when a centre sits on a domain face */
+        dem_system_step(s);
+        dem_neighbour_rebuild(s);       /* the domain check, also when a centre sits on a domain face */
         dmin = fmin(dmin, min_distance(s));
         touched |= min_distance(s) == 0.0;
     }
@@ -81,7 +81,7 @@ static void single_sphere(const char *what, dem_system *s, const double x0[3], c
     snprintf(label, sizeof label, "%s: centre never beyond the plane (1e-15 m)", what);
     check_true(label, dmin >= -1e-15);
     snprintf(label, sizeof label, "%s: kinetic energy kept (1e-12)", what);
-    check_rel(label, system_kinetic_energy(s), e0, 1e-12);
+    check_rel(label, dem_system_kinetic_energy(s), e0, 1e-12);
     snprintf(label, sizeof label, "%s: ends where the mirrored free flight ends (1e-12 m)", what);
     check_true(label, vec_err(s->p.x[i], xe) <= 1e-12);
     if (expect_exact_touch) {
@@ -101,7 +101,7 @@ static void bouncing(void)
     const double p[3] = {0, 0, 0}, n[3] = {0, 0, 1}, z0 = 0.01;
     add_symmetry(&s, p, n);
     const int i = add_sphere(&s, 0, 0, z0, 0.05, 0, 0, 1e-3);
-    system_setup(&s);
+    dem_system_setup(&s);
     const double m = s.p.mass[i], e0 = m * 9.81 * z0 + 0.5 * m * 0.05 * 0.05;
     const double period = 2 * sqrt(2 * z0 / 9.81);
     const long nsteps = (long)(10.25 * period / s.dt);
@@ -109,7 +109,7 @@ static void bouncing(void)
     int bounces = 0;
     for (long k = 0; k < nsteps; k++) {
         const double vz = s.p.v[i][2];
-        system_step(&s);
+        dem_system_step(&s);
         bounces += vz < 0 && s.p.v[i][2] > 0;
         zmin = fmin(zmin, s.p.x[i][2]);
         const double *v = s.p.v[i];
@@ -121,7 +121,7 @@ static void bouncing(void)
     check_true("floor under gravity: 10 bounces", bounces == 10);
     check_true("floor under gravity: m g z + m v^2/2 kept at every step (1e-10)", worst <= 1e-10);
     check_true("floor under gravity: centre never below the floor", zmin >= 0.0);
-    system_free(&s);
+    dem_system_free(&s);
 }
 
 static void bed(void)
@@ -153,7 +153,7 @@ static void bed(void)
     const double t_contact = 2.87 * pow(0.25 * m * m / (0.5 * rmin * Y * Y * 2 * sqrt(3.0) * vmax), 0.2);
     s.dt = t_contact / 50.0;
     s.nlist.skin = 0.1e-3;
-    system_setup(&s);
+    dem_system_setup(&s);
     const particles *q = &s.p;
     double elastic = 0.0;
     /* Hertz energy 8/15 Y* sqrt(R*) delta^(5/2) of pair and wall contacts; the mirror has none */
@@ -168,18 +168,18 @@ static void bed(void)
             }                                                                                            \
             for (int k = 0; k < s.nwalls; k++) {                                                         \
                 double gap, en[3];                                                                       \
-                if (wall_gap(&s.walls[k], q->x[i], q->radius[i], &gap, en) && gap < 0)                   \
+                if (dem_wall_gap(&s.walls[k], q->x[i], q->radius[i], &gap, en) && gap < 0)                   \
                     out += 8.0 / 15.0 * Y * sqrt(q->radius[i]) * pow(-gap, 2.5);                         \
             }                                                                                            \
         }                                                                                                \
-        out += system_kinetic_energy(&s);                                                                \
+        out += dem_system_kinetic_energy(&s);                                                                \
     } while (0)
     ENERGY(elastic);
     const double e0 = elastic;
     double worst = 0.0, dmin = INFINITY;
     int *reached = calloc((size_t)q->n, sizeof(int));
     for (long k = 1; k <= 100000; k++) {
-        system_step(&s);
+        dem_system_step(&s);
         for (int i = 0; i < q->n; i++) {
             const double d = L - q->x[i][0];
             dmin = fmin(dmin, d);
@@ -202,7 +202,7 @@ static void bed(void)
     check_rel("bed: total energy after 1e5 steps", e_end, e0, 1e-4);
     check_true("bed: energy deviation below 1e-4 throughout", worst < 1e-4);
     free(reached);
-    system_free(&s);
+    dem_system_free(&s);
 }
 
 int main(void)
@@ -217,7 +217,7 @@ int main(void)
         const double v0[3] = {0.5, 0.25, -0.125}, x0[3] = {L - 20 * dt * 0.5, 0, 0};
         const double ve[3] = {-0.5, 0.25, -0.125};
         single_sphere("face", &s, x0, v0, ve, 40, 1);
-        system_free(&s);
+        dem_system_free(&s);
     }
     { /* 2a. a tilted plane through the domain */
         dem_system s;
@@ -235,7 +235,7 @@ int main(void)
         const double vn = v0[0] * n[0] + v0[1] * n[1] + v0[2] * n[2];
         for (int k = 0; k < 3; k++) ve[k] = v0[k] - 2 * vn * n[k];
         single_sphere("tilted", &s, x0, v0, ve, 700, 0);
-        system_free(&s);
+        dem_system_free(&s);
     }
     { /* 2b. a corner of two planes */
         dem_system s;
@@ -246,7 +246,7 @@ int main(void)
         add_symmetry(&s, py, ny);
         const double x0[3] = {L - 0.003, L - 0.002, 0}, v0[3] = {0.3, 0.2, 0.1}, ve[3] = {-0.3, -0.2, 0.1};
         single_sphere("corner", &s, x0, v0, ve, 400, 0);
-        system_free(&s);
+        dem_system_free(&s);
     }
     bouncing();
     bed();

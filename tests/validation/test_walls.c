@@ -13,7 +13,7 @@
 
 static wall *add_wall(dem_system *s)
 {
-    wall *w = walls_add(s);
+    wall *w = dem_walls_add(s);
     memset(w, 0, sizeof *w);
     snprintf(w->name, sizeof w->name, "wall%d", s->nwalls);
     return w;
@@ -35,13 +35,13 @@ static void bounded_plane(void)
         add_sphere(&s, inside ? 0.0 : 0.02, 0, 0.01, 0, 0, 0, 1e-3);
         s.dt = 1e-5;
         s.nlist.skin = 1e-4;
-        system_setup(&s);
+        dem_system_setup(&s);
         double zmin = 1.0;
-        for (int k = 0; k < (inside ? 30000 : 12000); k++) { system_step(&s); zmin = fmin(zmin, s.p.x[0][2]); }
+        for (int k = 0; k < (inside ? 30000 : 12000); k++) { dem_system_step(&s); zmin = fmin(zmin, s.p.x[0][2]); }
         if (inside) check_true("bounded plane: sphere inside the bounds comes to rest on it",
                                fabs(s.p.x[0][2] - 1e-3) < 1e-5 && fabs(s.p.v[0][2]) < 1e-3);
         else check_true("bounded plane: sphere outside the bounds falls past", zmin < -0.05);
-        system_free(&s);
+        dem_system_free(&s);
     }
 }
 
@@ -65,13 +65,13 @@ static void box(void)
                    2 * rng_uniform(&g) - 1, 2 * rng_uniform(&g) - 1, 2 * rng_uniform(&g) - 1, 0.8e-3);
     s.dt = 2e-6;
     s.nlist.skin = 1e-4;
-    system_setup(&s);
+    dem_system_setup(&s);
     const double r = 0.8e-3, m = s.p.mass[0], Y = materials_pair(&s.materials, 0, 0)->Y_eff;
-    const double v_all = sqrt(2.0 * system_kinetic_energy(&s) / m);
+    const double v_all = sqrt(2.0 * dem_system_kinetic_energy(&s) / m);
     const double bound = pow(15.0 * m * v_all * v_all / (16.0 * Y * sqrt(r)), 0.4);
     double worst = 0.0, centre = 0.0;
     for (int k = 0; k < 20000; k++) {
-        system_step(&s);
+        dem_system_step(&s);
         for (int i = 0; i < s.p.n; i++)
             for (int q = 0; q < 3; q++) {
                 worst = fmax(worst, fabs(s.p.x[i][q]) + r - L);
@@ -81,7 +81,7 @@ static void box(void)
     printf("box: largest wall overlap %.3g m, bound %.3g m\n", worst, bound);
     check_true("box: no sphere centre leaves the box", centre < L);
     check_true("box: wall overlaps below the Hertz overlap at the whole kinetic energy", worst < bound);
-    system_free(&s);
+    dem_system_free(&s);
 }
 
 /* Radial impact at 0.5 m/s on a cylinder (inside or outside) or on a plane; returns e. */
@@ -107,10 +107,10 @@ static double radial_impact(int kind)
     add_sphere(&s, x0, 0, 0, kind == 2 ? -v : v, 0, 0, r);
     s.dt = 5e-7;
     s.nlist.skin = 1e-4;
-    system_setup(&s);
-    for (int k = 0; k < 4000; k++) system_step(&s);
+    dem_system_setup(&s);
+    for (int k = 0; k < 4000; k++) dem_system_step(&s);
     const double e = fabs(s.p.v[0][0]) / v;
-    system_free(&s);
+    dem_system_free(&s);
     return e;
 }
 
@@ -135,11 +135,11 @@ static double periodic_collision(double shift)
     add_sphere(&s, xb, 0.0002, 0, -0.5, 0, 0, r);
     s.dt = 5e-7;
     s.nlist.skin = 1e-4;
-    system_setup(&s);
-    for (int k = 0; k < 6000; k++) system_step(&s);
+    dem_system_setup(&s);
+    for (int k = 0; k < 6000; k++) dem_system_step(&s);
     for (int i = 0; i < s.p.n; i++)
-        if (s.p.id[i] == 0) { const double vx = s.p.v[i][0]; system_free(&s); return vx; }
-    system_free(&s);
+        if (s.p.id[i] == 0) { const double vx = s.p.v[i][0]; dem_system_free(&s); return vx; }
+    dem_system_free(&s);
     return NAN;
 }
 
@@ -151,11 +151,11 @@ static void external_force(void)
     s.p.f_ext[i][0] = 2e-6;   /* N */
     s.dt = 1e-5;
     s.nlist.skin = 1e-3;
-    system_setup(&s);
-    for (int k = 0; k < 10000; k++) system_step(&s);
+    dem_system_setup(&s);
+    for (int k = 0; k < 10000; k++) dem_system_step(&s);
     const double t = s.time, expected = 0.5 * 2e-6 / s.p.mass[i] * t * t;
     check_rel("external force: displacement F t^2 / (2 m)", s.p.x[i][0], expected, 1e-9);
-    system_free(&s);
+    dem_system_free(&s);
 }
 
 int main(void)

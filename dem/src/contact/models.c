@@ -23,37 +23,37 @@ static const int counts[SLOT_COUNT] = {NORMAL_COUNT, TANGENTIAL_COUNT, COHESION_
 static const char *const *const names[SLOT_COUNT] = {normal_names, tangential_names, cohesion_names,
                                                       rolling_names, surface_names};
 
-const contact_model *contact_model_get(enum contact_slot slot, int id)
+const contact_model *dem_contact_model_get(enum contact_slot slot, int id)
 {
     return slot >= 0 && slot < SLOT_COUNT && id >= 0 && id < counts[slot] ? tables[slot][id] : 0;
 }
 
-const char *const *contact_model_names(enum contact_slot slot) { return names[slot]; }
+const char *const *dem_contact_model_names(enum contact_slot slot) { return names[slot]; }
 
 /* the order of the slots in a contact's history */
 static const enum contact_slot history_order[SLOT_COUNT] = {SLOT_TANGENTIAL, SLOT_ROLLING, SLOT_NORMAL,
                                                            SLOT_SURFACE, SLOT_COHESION};
 
-int contact_history_size(const contact_models *m)
+int dem_contact_history_size(const contact_models *m)
 {
     int size = 0;
     for (int k = 0; k < SLOT_COUNT; k++)
-        size += contact_model_get(history_order[k], contact_model_id(m, history_order[k]))->history;
+        size += dem_contact_model_get(history_order[k], contact_model_id(m, history_order[k]))->history;
     return size;
 }
 
-int contact_history_antisymmetric(const contact_models *m)
+int dem_contact_history_antisymmetric(const contact_models *m)
 {
     int size = 0;   /* the leading slots whose whole history is antisymmetric */
     for (int k = 0; k < SLOT_COUNT; k++) {
-        const contact_model *d = contact_model_get(history_order[k], contact_model_id(m, history_order[k]));
+        const contact_model *d = dem_contact_model_get(history_order[k], contact_model_id(m, history_order[k]));
         if (d->history_antisymmetric != d->history) break;
         size += d->history;
     }
     return size;
 }
 
-void contact_history_copy(double *dst, const double *src, int size, int antisymmetric, int flipped)
+void dem_contact_history_copy(double *dst, const double *src, int size, int antisymmetric, int flipped)
 {
     for (int k = 0; k < size; k++) dst[k] = flipped && k < antisymmetric ? -src[k] : src[k];
 }

@@ -49,7 +49,7 @@ static inline double hooke_contact_time(const pair_coeffs *c, const contact_mode
 
 static inline void hooke_read_case(const dict *d, double *values)
 {
-    ((hooke_case *)values)->characteristic_velocity = dict_scalar(d, "characteristicVelocity", 1e-6, 1e4);
+    ((hooke_case *)values)->characteristic_velocity = dem_dict_scalar(d, "characteristicVelocity", 1e-6, 1e4);
 }
 
 static const contact_model normal_hooke_model = {

@@ -72,7 +72,7 @@ static inline const char *cdt_jkr_check(const double *values, const char **key)
 
 static inline void cdt_jkr_read_case(const dict *d, double *values)
 {
-    ((cdt_jkr_case *)values)->torsion_torque = dict_bool_opt(d, "torsionTorque", 1);
+    ((cdt_jkr_case *)values)->torsion_torque = dem_dict_bool_opt(d, "torsionTorque", 1);
 }
 
 static const contact_model rolling_cdt_jkr_model = {

@@ -142,18 +142,18 @@ static inline void surface_roughness_wall_guard(const contact_models *m, const d
 
 static inline void roughness_read_case(const dict *contact_models_dict, double *values)
 {
-    const dict *r = dict_sub(contact_models_dict, "roughness");
+    const dict *r = dem_dict_sub(contact_models_dict, "roughness");
     static const char *const dists[] = {"normal", "uniform", 0};
     roughness_case *rp = (roughness_case *)values;
-    rp->distribution = dict_choice(r, "distribution", dists);
+    rp->distribution = dem_dict_choice(r, "distribution", dists);
     /* angles in radians; |Delta Gamma| < pi/2 keeps the rotated normal out of the contact */
     if (rp->distribution == (double)SCATTER_NORMAL) {
-        rp->std_dev = dict_scalar(r, "stdDev", 0.0, 1.0);
-        rp->max = dict_scalar_opt(r, "max", fmin(3.0 * rp->std_dev, 1.5), 0.0, 1.5);
+        rp->std_dev = dem_dict_scalar(r, "stdDev", 0.0, 1.0);
+        rp->max = dem_dict_scalar_opt(r, "max", fmin(3.0 * rp->std_dev, 1.5), 0.0, 1.5);
     } else {
-        rp->max = dict_scalar(r, "max", 0.0, 1.5);
+        rp->max = dem_dict_scalar(r, "max", 0.0, 1.5);
     }
-    rp->seed = (double)dict_label_opt(r, "seed", 1, 0, 2147483647L);
+    rp->seed = (double)dem_dict_label_opt(r, "seed", 1, 0, 2147483647L);
 }
 
 static const contact_model surface_roughness_model = {
