@@ -34,7 +34,7 @@
 struct coupling {
     char case_dir[4096];
     dem_system s;
-    run_settings rs;
+    dem_run_settings rs;
     cpl_mesh mesh;
     cpl_voidfraction vf;
     enum cpl_interp_scheme interp_scheme;
@@ -53,7 +53,7 @@ struct coupling {
     /* per cell */
     double *ksl;
     double (*up)[3], (*source)[3];
-    particle_writer *writer;
+    dem_particle_writer *writer;
     FILE *means;
     double dem_seconds, coupling_seconds;
     long outside_reported;
@@ -75,14 +75,14 @@ static void read_coupling_properties(coupling *c, double dt_f, double *alpha_min
 {
     char path[4200];
     snprintf(path, sizeof path, "%s/constant/couplingProperties", c->case_dir);
-    dict *d = dem_dict_read(path);
+    dem_dict *d = dem_dict_read(path);
     c->interval = (int)dem_dict_label(d, "couplingInterval", 1, 1000000);
     const double dt_dem = c->s.dt;
     if (fabs(dt_f - c->interval * dt_dem) > 1e-9 * dt_f)
         dem_dict_fatal(d, "couplingInterval", "the fluid time step (system/controlDict deltaT %g s) must equal "
                    "couplingInterval x the DEM timeStep (%d x %g s = %g s)", dt_f, c->interval, dt_dem,
                    c->interval * dt_dem);
-    const dict *v = dem_dict_sub(d, "voidFraction");
+    const dem_dict *v = dem_dict_sub(d, "voidFraction");
     static const char *const vf_names[] = {"centre", "divided", "gaussian", 0};
     *vf_model = (enum cpl_vf_model)dem_dict_choice(v, "model", vf_names);
     *alpha_min = dem_dict_scalar_opt(v, "alphaMin", 0.3, 0.01, 0.99);
@@ -131,7 +131,7 @@ static cpl_cell_weights weights_of(const coupling *c)
  * start). */
 static void update_void_fraction(coupling *c)
 {
-    particles *p = &c->s.p;
+    dem_particles *p = &c->s.p;
     grow_particles(c, p->n);
     const int outside = cpl_vf_compute(&c->vf, &c->mesh, p->n, (const double (*)[3])p->x, p->radius, p->fluid_cell);
     if (outside > 0 && outside != c->outside_reported) {
@@ -149,7 +149,7 @@ static void update_void_fraction(coupling *c)
 static void evaluate_forces(coupling *c, const double (*U)[3], const double (*grad_p)[3], int new_field,
                             int new_positions)
 {
-    particles *p = &c->s.p;
+    dem_particles *p = &c->s.p;
     const cpl_cell_weights w = weights_of(c);
     cpl_gather_scalar(&w, c->vf.alpha, c->alpha_p);
     if (c->interp_scheme == CPL_INTERP_CELL) {   /* the spreading weights: exact balance */
@@ -193,7 +193,7 @@ static void evaluate_forces(coupling *c, const double (*U)[3], const double (*gr
  * particle table: the DEM may have re-sorted the particles since the evaluation). */
 static void apply_fluid_forces(coupling *c)
 {
-    particles *p = &c->s.p;
+    dem_particles *p = &c->s.p;
     for (int i = 0; i < p->n; i++) {
         const double b = p->beta[i];
         for (int q = 0; q < 3; q++) p->f_ext[i][q] = b * (p->u_fluid[i][q] - p->v[i][q]) + p->f_fluid[i][q];
@@ -203,7 +203,7 @@ static void apply_fluid_forces(coupling *c)
 /* sum += the fluid's force on all particles in this DEM step (f_ext as the step used it) */
 static void add_fluid_force(const coupling *c, double sum[3])
 {
-    const particles *p = &c->s.p;
+    const dem_particles *p = &c->s.p;
     double f[3] = {0.0, 0.0, 0.0};
     for (int i = 0; i < p->n; i++)
         for (int q = 0; q < 3; q++) f[q] += p->f_ext[i][q];
@@ -225,7 +225,7 @@ static void write_means(coupling *c)
  * empty. Said once, at the start. */
 static void warn_large_particles(const coupling *c)
 {
-    const particles *p = &c->s.p;
+    const dem_particles *p = &c->s.p;
     int count = 0;
     double worst = 0.0;
     for (int i = 0; i < p->n; i++) {
@@ -285,7 +285,7 @@ static void setup_particles(coupling *c, const char *case_dir, double t_start)
 {
     c->restarted = t_start > 0.0;
     dem_case_read(case_dir, &c->s, &c->rs, c->restarted);
-    contact_state saved;
+    dem_contact_state saved;
     memset(&saved, 0, sizeof saved);
     char base[4200];
     snprintf(base, sizeof base, "%s/particles", case_dir);
@@ -402,7 +402,7 @@ int coupling_particle_count(const coupling *c) { return c->s.p.n; }
 
 void coupling_particle_means(const coupling *c, double v[3], double x[3])
 {
-    const particles *p = &c->s.p;
+    const dem_particles *p = &c->s.p;
     for (int q = 0; q < 3; q++) v[q] = x[q] = 0.0;
     for (int i = 0; i < p->n; i++)
         for (int q = 0; q < 3; q++) { v[q] += p->v[i][q]; x[q] += p->x[i][q]; }
@@ -416,7 +416,7 @@ void coupling_write(coupling *c, double time)
      * continues the contacts */
     if (fabs(time - c->s.time) > 0.5 * c->s.dt)
         dem_fatal("coupling: particle snapshot asked at t = %g s, but the DEM is at t = %g s", time, c->s.time);
-    contact_state cs;
+    dem_contact_state cs;
     dem_restart_save_contacts(&c->s, &cs);
     dem_io_write_snapshot_contacts(c->writer, &c->s.p, time, c->s.step, &cs);
     dem_contact_state_free(&cs);

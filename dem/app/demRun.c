@@ -30,10 +30,10 @@ static void usage(void)
 
 static long last_written_step = -1;
 
-static void write_snapshot(particle_writer *w, const dem_system *s)
+static void write_snapshot(dem_particle_writer *w, const dem_system *s)
 {
     if (s->step == last_written_step) return;
-    contact_state cs;
+    dem_contact_state cs;
     dem_restart_save_contacts(s, &cs);
     dem_io_write_snapshot_contacts(w, &s->p, s->time, s->step, &cs);
     dem_contact_state_free(&cs);
@@ -41,7 +41,7 @@ static void write_snapshot(particle_writer *w, const dem_system *s)
 }
 
 /* Run nsteps, writing snapshots every write_every steps (0: none) and progress lines. */
-static void run_steps(dem_system *s, long nsteps, long write_every, particle_writer *w,
+static void run_steps(dem_system *s, long nsteps, long write_every, dem_particle_writer *w,
                       double progress_interval)
 {
     const double start = wall_clock();
@@ -78,12 +78,12 @@ int main(int argc, char **argv)
 
     dem_system s;
     dem_system_init(&s);
-    run_settings rs;
+    dem_run_settings rs;
     dem_case_read(case_dir, &s, &rs, restart);
 
     char base[4200];
     snprintf(base, sizeof base, "%s/particles", case_dir);
-    contact_state saved;
+    dem_contact_state saved;
     memset(&saved, 0, sizeof saved);
     if (restart) {
         if (dem_restart_read(&s, base, NAN, 0.0, &saved) != 0)
@@ -95,7 +95,7 @@ int main(int argc, char **argv)
     dem_restart_setup(&s, restart ? &saved : NULL);
     dem_contact_state_free(&saved);
 
-    particle_writer *w = dem_io_open_writer(base, restart);
+    dem_particle_writer *w = dem_io_open_writer(base, restart);
     if (restart) last_written_step = s.step;
     else write_snapshot(w, &s);
 

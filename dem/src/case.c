@@ -10,9 +10,9 @@
 
 static const char *const axis_names[] = {"x", "y", "z", 0};
 
-static void read_domain(const dict *root, dem_system *s)
+static void read_domain(const dem_dict *root, dem_system *s)
 {
-    const dict *d = dem_dict_sub(root, "domain");
+    const dem_dict *d = dem_dict_sub(root, "domain");
     dem_dict_vector(d, "min", s->domain_min);
     dem_dict_vector(d, "max", s->domain_max);
     dem_dict_bools3_opt(d, "periodic", s->periodic, 0);
@@ -26,15 +26,15 @@ static void read_domain(const dict *root, dem_system *s)
     }
 }
 
-static void read_materials(const dict *root, dem_system *s)
+static void read_materials(const dem_dict *root, dem_system *s)
 {
-    const dict *d = dem_dict_sub(root, "materials");
-    material_table *t = &s->materials;
+    const dem_dict *d = dem_dict_sub(root, "materials");
+    dem_material_table *t = &s->materials;
     for (int i = 0; i < dem_dict_size(d); i++) {
         if (!dem_dict_is_dict_at(d, i)) dem_dict_fatal(d, dem_dict_key_at(d, i), "a material is a sub-dictionary { youngsModulus; poissonsRatio; density; }");
         if (t->ntypes == DEM_MAX_TYPES) dem_dict_fatal(d, dem_dict_key_at(d, i), "at most %d materials", DEM_MAX_TYPES);
-        const dict *m = dem_dict_dict_at(d, i);
-        material *mat = &t->mat[t->ntypes++];
+        const dem_dict *m = dem_dict_dict_at(d, i);
+        dem_material *mat = &t->mat[t->ntypes++];
         snprintf(mat->name, sizeof mat->name, "%s", dem_dict_key_at(d, i));
         mat->youngs_modulus = dem_dict_scalar(m, "youngsModulus", 1e3, 1e13);
         mat->poisson_ratio = dem_dict_scalar(m, "poissonsRatio", 0.0, 0.4999);
@@ -44,7 +44,7 @@ static void read_materials(const dict *root, dem_system *s)
 }
 
 /* "a-b" -> two material indices (names may themselves contain '-'). */
-static int split_pair(const material_table *t, const char *key, int *a, int *b)
+static int split_pair(const dem_material_table *t, const char *key, int *a, int *b)
 {
     char buf[2 * DEM_NAME_LEN + 2];
     for (const char *dash = strchr(key, '-'); dash; dash = strchr(dash + 1, '-')) {
@@ -63,15 +63,15 @@ static const char *const slot_names[SLOT_COUNT] = {"normal", "tangential", "cohe
 
 /* The chosen models' parameters of one interaction, per slot, from the entry e, else from the
  * 'default' entry def, else the model's fallback (NAN: required); then each model's check. */
-static void read_model_values(const dict *e, const dict *def, const contact_models *m,
+static void read_model_values(const dem_dict *e, const dem_dict *def, const dem_contact_models *m,
                               double values[SLOT_COUNT][MODEL_VALUES])
 {
     for (int slot = 0; slot < SLOT_COUNT; slot++) {
-        const contact_model *md = dem_contact_model_get(slot, contact_model_id(m, slot));
+        const dem_contact_model *md = dem_contact_model_get(slot, contact_model_id(m, slot));
         for (int k = 0; k < MODEL_VALUES; k++) values[slot][k] = 0.0;
         for (int k = 0; k < md->nparams; k++) {
-            const model_param *mp = &md->params[k];
-            const dict *src = dem_dict_has(e, mp->key) ? e : def && dem_dict_has(def, mp->key) ? def : NULL;
+            const dem_model_param *mp = &md->params[k];
+            const dem_dict *src = dem_dict_has(e, mp->key) ? e : def && dem_dict_has(def, mp->key) ? def : NULL;
             if (!src && isnan(mp->fallback))
                 dem_dict_fatal_here(e, "the %s %s model needs '%s' [%s] in this interaction (or in 'default')",
                                 md->name, slot_names[slot], mp->key, mp->unit);
@@ -87,18 +87,18 @@ static void read_model_values(const dict *e, const dict *def, const contact_mode
     }
 }
 
-static void read_interactions(const dict *root, dem_system *s)
+static void read_interactions(const dem_dict *root, dem_system *s)
 {
-    const dict *d = dem_dict_sub(root, "interactions");
-    material_table *t = &s->materials;
+    const dem_dict *d = dem_dict_sub(root, "interactions");
+    dem_material_table *t = &s->materials;
     int set[DEM_MAX_TYPES][DEM_MAX_TYPES] = {{0}};
-    const dict *def = dem_dict_sub_opt(d, "default");
+    const dem_dict *def = dem_dict_sub_opt(d, "default");
     for (int pass = 0; pass < 2; pass++) {       /* default first, then the named pairs */
         for (int i = 0; i < dem_dict_size(d); i++) {
             const char *key = dem_dict_key_at(d, i);
             const int is_default = strcmp(key, "default") == 0;
             if (is_default != (pass == 0)) continue;
-            const dict *e = is_default ? def : dem_dict_dict_at(d, i);
+            const dem_dict *e = is_default ? def : dem_dict_dict_at(d, i);
             if (!e) dem_dict_fatal(d, key, "an interaction is a sub-dictionary { restitution; friction; }");
             const double rest = dem_dict_scalar(e, "restitution", 1e-6, 1.0);
             const double mu = dem_dict_scalar(e, "friction", 0.0, 10.0);
@@ -132,10 +132,10 @@ static void read_interactions(const dict *root, dem_system *s)
 
 /* contactModels: one model per slot (normal and tangential required, the others default to
  * their slot's first model), limitForce, and each chosen model's case-wide settings. */
-static void read_models(const dict *root, dem_system *s)
+static void read_models(const dem_dict *root, dem_system *s)
 {
-    const dict *d = dem_dict_sub(root, "contactModels");
-    contact_models *m = &s->models;
+    const dem_dict *d = dem_dict_sub(root, "contactModels");
+    dem_contact_models *m = &s->models;
     int *const ids[SLOT_COUNT] = {&m->normal, &m->tangential, &m->cohesion, &m->rolling, &m->surface};
     for (int slot = 0; slot < SLOT_COUNT; slot++)
         *ids[slot] = slot == SLOT_NORMAL || slot == SLOT_TANGENTIAL
@@ -143,12 +143,12 @@ static void read_models(const dict *root, dem_system *s)
             : dem_dict_choice_opt(d, slot_names[slot], dem_contact_model_names(slot), 0);
     m->fn_floor = dem_dict_bool_opt(d, "limitForce", 0) ? 0.0 : -INFINITY;
     for (int slot = 0; slot < SLOT_COUNT; slot++) {
-        const contact_model *md = dem_contact_model_get(slot, *ids[slot]);
+        const dem_contact_model *md = dem_contact_model_get(slot, *ids[slot]);
         if (md->read_case) md->read_case(d, m->values[slot]);
     }
 }
 
-static int material_of(const dict *d, const material_table *t)
+static int material_of(const dem_dict *d, const dem_material_table *t)
 {
     const char *name = dem_dict_word(d, "material");
     const int k = dem_materials_find(t, name);
@@ -157,7 +157,7 @@ static int material_of(const dict *d, const material_table *t)
 }
 
 /* axis, centre (the two coordinates across the axis) and radius of a cylinder wall or region */
-static void read_cylinder(const dict *d, int *axis, double centre[2], double *radius)
+static void read_cylinder(const dem_dict *d, int *axis, double centre[2], double *radius)
 {
     *axis = dem_dict_choice(d, "axis", axis_names);
     double *c;
@@ -169,21 +169,21 @@ static void read_cylinder(const dict *d, int *axis, double centre[2], double *ra
     *radius = dem_dict_scalar(d, "radius", 1e-9, 1e6);
 }
 
-static wall *new_wall(dem_system *s, const dict *d, const char *name)
+static dem_wall *new_wall(dem_system *s, const dem_dict *d, const char *name)
 {
-    wall *w = dem_walls_add(s);
+    dem_wall *w = dem_walls_add(s);
     snprintf(w->name, sizeof w->name, "%s", name);
     return w;
 }
 
 /* A symmetry plane (symmetry.h): no material and no force, so not a wall. It must lie within
  * the domain (its point inside the domain box) and may not cut a periodic direction. */
-static void read_symmetry_plane(const dict *e, const char *name, dem_system *s)
+static void read_symmetry_plane(const dem_dict *e, const char *name, dem_system *s)
 {
     if (dem_dict_has(e, "material"))
         dem_dict_fatal(e, "material", "a symmetryPlane exerts no force and takes no material");
     if (s->nsymmetry == DEM_MAX_SYMMETRY_PLANES) dem_dict_fatal_here(e, "at most %d symmetry planes", DEM_MAX_SYMMETRY_PLANES);
-    symmetry_plane *sp = &s->symmetry_planes[s->nsymmetry++];
+    dem_symmetry_plane *sp = &s->symmetry_planes[s->nsymmetry++];
     memset(sp, 0, sizeof *sp);
     snprintf(sp->name, sizeof sp->name, "%s", name);
     dem_dict_vector(e, "point", sp->point);
@@ -205,15 +205,15 @@ static void read_symmetry_plane(const dict *e, const char *name, dem_system *s)
     sp->offset = sp->point[0] * sp->normal[0] + sp->point[1] * sp->normal[1] + sp->point[2] * sp->normal[2];
 }
 
-static void read_walls(const dict *root, dem_system *s)
+static void read_walls(const dem_dict *root, dem_system *s)
 {
-    const dict *d = dem_dict_sub_opt(root, "walls");
+    const dem_dict *d = dem_dict_sub_opt(root, "walls");
     if (!d) return;
     static const char *const kinds[] = {"plane", "box", "cylinder", "symmetryPlane", 0};
     for (int i = 0; i < dem_dict_size(d); i++) {
         const char *name = dem_dict_key_at(d, i);
         if (!dem_dict_is_dict_at(d, i)) dem_dict_fatal(d, name, "a wall is a sub-dictionary { type ...; }");
-        const dict *e = dem_dict_dict_at(d, i);
+        const dem_dict *e = dem_dict_dict_at(d, i);
         const int kind = dem_dict_choice(e, "type", kinds);
         if (kind == 3) {
             read_symmetry_plane(e, name, s);
@@ -221,7 +221,7 @@ static void read_walls(const dict *root, dem_system *s)
         }
         const int mat = material_of(e, &s->materials);
         if (kind == 0) {
-            wall *w = new_wall(s, e, name);
+            dem_wall *w = new_wall(s, e, name);
             w->kind = WALL_PLANE;
             w->material = mat;
             dem_dict_vector(e, "point", w->point);
@@ -243,7 +243,7 @@ static void read_walls(const dict *root, dem_system *s)
             for (int k = 0; k < 6; k++) {   /* six bounded faces, normals pointing inwards */
                 char face[80];
                 snprintf(face, sizeof face, "%s.%s%s", name, axis_names[k / 2], k % 2 ? "Max" : "Min");
-                wall *w = new_wall(s, e, face);
+                dem_wall *w = new_wall(s, e, face);
                 w->kind = WALL_PLANE;
                 w->material = mat;
                 w->bounded = 1;
@@ -254,7 +254,7 @@ static void read_walls(const dict *root, dem_system *s)
                 w->normal[a] = k % 2 ? -1.0 : 1.0;
             }
         } else {
-            wall *w = new_wall(s, e, name);
+            dem_wall *w = new_wall(s, e, name);
             w->kind = WALL_CYLINDER;
             w->material = mat;
             read_cylinder(e, &w->axis, w->centre, &w->radius);
@@ -266,9 +266,9 @@ static void read_walls(const dict *root, dem_system *s)
     }
 }
 
-static void read_diameter(const dict *e, insertion *ins)
+static void read_diameter(const dem_dict *e, dem_insertion *ins)
 {
-    const dict *d = dem_dict_sub(e, "diameter");
+    const dem_dict *d = dem_dict_sub(e, "diameter");
     static const char *const dists[] = {"constant", "uniform", "normal", "discrete", 0};
     ins->dist = dem_dict_choice(d, "distribution", dists);
     switch (ins->dist) {
@@ -298,9 +298,9 @@ static void read_diameter(const dict *e, insertion *ins)
     }
 }
 
-static void read_region(const dict *e, insertion *ins)
+static void read_region(const dem_dict *e, dem_insertion *ins)
 {
-    const dict *r = dem_dict_sub(e, "region");
+    const dem_dict *r = dem_dict_sub(e, "region");
     static const char *const kinds[] = {"box", "cylinder", 0};
     ins->region = dem_dict_choice(r, "type", kinds);
     if (ins->region == REGION_BOX) {
@@ -316,7 +316,7 @@ static void read_region(const dict *e, insertion *ins)
 }
 
 /* The lattice spacing: one number (cubic) or (dx dy dz); at least the largest diameter. */
-static void read_spacing(const dict *e, insertion *ins)
+static void read_spacing(const dem_dict *e, dem_insertion *ins)
 {
     dem_dict_scalar_or_vector(e, "spacing", 1e-9, 1e3, ins->spacing);
     const double dmax = dem_insertion_max_diameter(ins);
@@ -327,16 +327,16 @@ static void read_spacing(const dict *e, insertion *ins)
                    ins->dist == SIZE_CONSTANT ? "" : " (the distribution's largest)");
 }
 
-static void run_insertions(const dict *root, dem_system *s, int insert, const char *constant_dir)
+static void run_insertions(const dem_dict *root, dem_system *s, int insert, const char *constant_dir)
 {
-    const dict *d = dem_dict_sub_opt(root, "insertion");
+    const dem_dict *d = dem_dict_sub_opt(root, "insertion");
     if (!d) return;
     static const char *const methods[] = {"random", "lattice", "file", 0};
     for (int i = 0; i < dem_dict_size(d); i++) {
         const char *name = dem_dict_key_at(d, i);
         if (!dem_dict_is_dict_at(d, i)) dem_dict_fatal(d, name, "an insertion is a sub-dictionary");
-        const dict *e = dem_dict_dict_at(d, i);
-        insertion ins;
+        const dem_dict *e = dem_dict_dict_at(d, i);
+        dem_insertion ins;
         memset(&ins, 0, sizeof ins);
         snprintf(ins.name, sizeof ins.name, "%s", name);
         ins.method = dem_dict_choice_opt(e, "method", methods, INSERT_RANDOM);
@@ -404,10 +404,10 @@ double dem_case_default_max_velocity(const dem_system *s)
     return fmax(vmax + sqrt(2.0 * sqrt(g) * h), 0.1);
 }
 
-void dem_case_read(const char *case_dir, dem_system *s, run_settings *rs, int skip_insertion)
+void dem_case_read(const char *case_dir, dem_system *s, dem_run_settings *rs, int skip_insertion)
 {
     snprintf(rs->dict_path, sizeof rs->dict_path, "%s/constant/demProperties", case_dir);
-    dict *root = dem_dict_read(rs->dict_path);
+    dem_dict *root = dem_dict_read(rs->dict_path);
     s->dt = dem_dict_scalar(root, "timeStep", 1e-12, 1.0);
     snprintf(rs->timestep_source, sizeof rs->timestep_source, "%s:%d", rs->dict_path, dem_dict_key_line(root, "timeStep"));
     rs->end_time = dem_dict_scalar(root, "endTime", 0.0, 1e9);

@@ -4,7 +4,7 @@
 
 #include "system.h"
 
-typedef struct run_settings {
+typedef struct dem_run_settings {
     char dict_path[4096];
     double end_time;             /* [s] */
     double write_interval;       /* [s], 0: final state only */
@@ -12,12 +12,12 @@ typedef struct run_settings {
     double max_expected_velocity;/* [m/s]; < 0: not given, use dem_case_default_max_velocity */
     int timestep_override;
     char timestep_source[4200];  /* "file:line" of timeStep, for messages */
-} run_settings;
+} dem_run_settings;
 
 /* Read <case_dir>/constant/demProperties and set up s (materials, models, walls, domain, and,
  * unless skip_insertion, the inserted particles). Every error names file, line and key. The
  * time-step check is left to the caller (after a restart has loaded its particles). */
-void dem_case_read(const char *case_dir, dem_system *s, run_settings *rs, int skip_insertion);
+void dem_case_read(const char *case_dir, dem_system *s, dem_run_settings *rs, int skip_insertion);
 
 /* The fastest particle now plus a free fall over the domain's extent along gravity [m/s]. */
 double dem_case_default_max_velocity(const dem_system *s);

@@ -6,14 +6,14 @@
 #include "error.h"
 #include "system.h"
 
-void dem_contact_store_init(contact_store *cs, int history_size, int antisymmetric)
+void dem_contact_store_init(dem_contact_store *cs, int history_size, int antisymmetric)
 {
     memset(cs, 0, sizeof *cs);
     cs->history_size = history_size;
     cs->antisymmetric = antisymmetric;
 }
 
-void dem_contact_store_free(contact_store *cs)
+void dem_contact_store_free(dem_contact_store *cs)
 {
     free(cs->first);
     free(cs->second);
@@ -22,14 +22,14 @@ void dem_contact_store_free(contact_store *cs)
     dem_contact_store_init(cs, 0, 0);
 }
 
-void dem_contact_store_clear(contact_store *cs)
+void dem_contact_store_clear(dem_contact_store *cs)
 {
     if (cs->used) memset(cs->used, 0, (size_t)cs->capacity);
     cs->count = 0;
 }
 
 /* The slot of a key, the pair in either order: a mix of the lower and the higher id. */
-static size_t home_slot(const contact_store *cs, int64_t a, int64_t b)
+static size_t home_slot(const dem_contact_store *cs, int64_t a, int64_t b)
 {
     uint64_t lo = (uint64_t)(a < b ? a : b), hi = (uint64_t)(a < b ? b : a);
     uint64_t z = lo * 0x9e3779b97f4a7c15ULL ^ (hi + 0x632be59bd9b4e019ULL);
@@ -40,9 +40,9 @@ static size_t home_slot(const contact_store *cs, int64_t a, int64_t b)
 
 static int same_pair(int64_t a, int64_t b, int64_t c, int64_t d) { return (a == c && b == d) || (a == d && b == c); }
 
-static void grow(contact_store *cs)
+static void grow(dem_contact_store *cs)
 {
-    contact_store old = *cs;
+    dem_contact_store old = *cs;
     cs->capacity = old.capacity ? 2 * old.capacity : 1024;
     const int hs = cs->history_size;
     cs->first = dem_malloc((size_t)cs->capacity * sizeof(int64_t));
@@ -58,7 +58,7 @@ static void grow(contact_store *cs)
     free(old.used);
 }
 
-void dem_contact_store_put(contact_store *cs, int64_t first, int64_t second, const double *h)
+void dem_contact_store_put(dem_contact_store *cs, int64_t first, int64_t second, const double *h)
 {
     if (2 * (cs->count + 1) > cs->capacity) grow(cs);   /* at most half full */
     size_t k = home_slot(cs, first, second);
@@ -71,7 +71,7 @@ void dem_contact_store_put(contact_store *cs, int64_t first, int64_t second, con
     memcpy(cs->history + k * cs->history_size, h, (size_t)cs->history_size * sizeof(double));
 }
 
-int dem_contact_store_take(const contact_store *cs, int64_t first, int64_t second, double *h)
+int dem_contact_store_take(const dem_contact_store *cs, int64_t first, int64_t second, double *h)
 {
     if (cs->count == 0) return 0;
     for (size_t k = home_slot(cs, first, second); cs->used[k]; k = (k + 1) & (size_t)(cs->capacity - 1)) {
@@ -83,29 +83,29 @@ int dem_contact_store_take(const contact_store *cs, int64_t first, int64_t secon
     return 0;
 }
 
-void dem_contacts_gather(const dem_system *s, contact_store *cs)
+void dem_contacts_gather(const dem_system *s, dem_contact_store *cs)
 {
     dem_contact_store_clear(cs);
     const int hs = s->history_size;
     if (hs == 0) return;
-    const neighbour_list *nl = &s->nlist;
+    const dem_neighbour_list *nl = &s->nlist;
     const int64_t *id = s->p.id;
     for (int i = 0; i < nl->rows; i++)
         for (int k = nl->start[i]; k < nl->start[i + 1]; k++)
             if (nl->touching[k]) dem_contact_store_put(cs, id[i], id[nl->partner[k]], nl->history + (size_t)k * hs);
     for (int w = 0; w < s->nwalls; w++) {
-        const wall_contacts *wc = &s->wall_lists[w];
+        const dem_wall_contacts *wc = &s->wall_lists[w];
         for (int m = 0; m < wc->n; m++)
             if (wc->touching[m])
                 dem_contact_store_put(cs, contact_wall_key(w), id[wc->particle[m]], wc->history + (size_t)m * hs);
     }
 }
 
-long dem_contacts_scatter(dem_system *s, const contact_store *cs)
+long dem_contacts_scatter(dem_system *s, const dem_contact_store *cs)
 {
     const int hs = s->history_size;
     if (hs == 0 || cs->count == 0) return 0;
-    neighbour_list *nl = &s->nlist;
+    dem_neighbour_list *nl = &s->nlist;
     const int64_t *id = s->p.id;
     long found = 0;
     for (int i = 0; i < nl->rows; i++)
@@ -115,7 +115,7 @@ long dem_contacts_scatter(dem_system *s, const contact_store *cs)
                 found++;
             }
     for (int w = 0; w < s->nwalls; w++) {
-        wall_contacts *wc = &s->wall_lists[w];
+        dem_wall_contacts *wc = &s->wall_lists[w];
         for (int m = 0; m < wc->n; m++)
             if (dem_contact_store_take(cs, contact_wall_key(w), id[wc->particle[m]], wc->history + (size_t)m * hs)) {
                 wc->touching[m] = 1;
@@ -125,7 +125,7 @@ long dem_contacts_scatter(dem_system *s, const contact_store *cs)
     return found;
 }
 
-void dem_contacts_to_state(const contact_store *store, int nwalls, contact_state *state)
+void dem_contacts_to_state(const dem_contact_store *store, int nwalls, dem_contact_state *state)
 {
     const int hs = store->history_size;
     memset(state, 0, sizeof *state);
@@ -142,7 +142,7 @@ void dem_contacts_to_state(const contact_store *store, int nwalls, contact_state
     }
 }
 
-void dem_contacts_from_state(const contact_state *state, contact_store *store)
+void dem_contacts_from_state(const dem_contact_state *state, dem_contact_store *store)
 {
     dem_contact_store_clear(store);
     for (long c = 0; c < state->count; c++)

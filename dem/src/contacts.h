@@ -17,35 +17,35 @@
 
 #include "io.h"
 
-typedef struct contact_store {
+typedef struct dem_contact_store {
     int history_size;        /* doubles per contact */
     int antisymmetric;       /* its leading part that changes sign when (i, j) swap */
     long count, capacity;    /* entries, slots (a power of two: open addressing) */
     int64_t *first, *second; /* the key as held: ids (i, j), or (wall key, particle id) */
     double *history;         /* history_size per slot */
     unsigned char *used;
-} contact_store;
+} dem_contact_store;
 
 /* Wall contacts carry the wall's index where a pair carries the first id (ids are >= 0). */
 static inline int64_t contact_wall_key(int wall) { return -1 - (int64_t)wall; }
 
 struct dem_system;
-void dem_contact_store_init(contact_store *cs, int history_size, int antisymmetric);
-void dem_contact_store_free(contact_store *cs);
-void dem_contact_store_clear(contact_store *cs);
-void dem_contact_store_put(contact_store *cs, int64_t first, int64_t second, const double *h);
+void dem_contact_store_init(dem_contact_store *cs, int history_size, int antisymmetric);
+void dem_contact_store_free(dem_contact_store *cs);
+void dem_contact_store_clear(dem_contact_store *cs);
+void dem_contact_store_put(dem_contact_store *cs, int64_t first, int64_t second, const double *h);
 /* Copy the history of (first, second) into h (its antisymmetric part negated if the store held
  * the pair as (second, first)); returns 1 if found. */
-int dem_contact_store_take(const contact_store *cs, int64_t first, int64_t second, double *h);
+int dem_contact_store_take(const dem_contact_store *cs, int64_t first, int64_t second, double *h);
 
 /* The histories of the system's touching contacts (pairs and walls) into the store. */
-void dem_contacts_gather(const struct dem_system *s, contact_store *cs);
+void dem_contacts_gather(const struct dem_system *s, dem_contact_store *cs);
 /* Onto the current lists: each listed pair and wall candidate finds its history by its ids;
  * returns how many were found. */
-long dem_contacts_scatter(struct dem_system *s, const contact_store *cs);
+long dem_contacts_scatter(struct dem_system *s, const dem_contact_store *cs);
 
 /* The flat form a snapshot holds (io.h), from and into a store. */
-void dem_contacts_to_state(const contact_store *store, int nwalls, contact_state *state);
-void dem_contacts_from_state(const contact_state *state, contact_store *store);
+void dem_contacts_to_state(const dem_contact_store *store, int nwalls, dem_contact_state *state);
+void dem_contacts_from_state(const dem_contact_state *state, dem_contact_store *store);
 
 #endif

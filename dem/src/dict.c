@@ -35,16 +35,16 @@ typedef struct {
     char *file;          /* file the entry was read from (differs from the dict's after #include) */
     int line;
     int used;            /* touched by an accessor */
-    dict *sub;           /* non-NULL for `key { ... }` */
+    dem_dict *sub;           /* non-NULL for `key { ... }` */
     token *tok;          /* value tokens without the ';' */
     int ntok, captok;
 } entry;
 
-struct dict {
+struct dem_dict {
     char *name;
     char *file;
     int line;
-    const dict *parent;  /* for messages: "demProperties/materials/glass" */
+    const dem_dict *parent;  /* for messages: "demProperties/materials/glass" */
     entry *ent;
     int n, cap;
     char **asked;        /* every key an accessor asked for, for suggestions */
@@ -128,7 +128,7 @@ static const char *nearest(const char *word, const char *const *cand, int ncand)
 }
 
 /* "demProperties/materials/glass": the dictionary's position for messages. */
-static void scope_name(const dict *d, char *buf, size_t n)
+static void scope_name(const dem_dict *d, char *buf, size_t n)
 {
     if (d->parent) {
         scope_name(d->parent, buf, n);
@@ -303,9 +303,9 @@ static char *read_file(const char *path, const char **why)
 
 /* ------------------------------------------------------------------ tree building */
 
-static dict *dict_new(const char *name, const char *file, int line, const dict *parent)
+static dem_dict *dict_new(const char *name, const char *file, int line, const dem_dict *parent)
 {
-    dict *d = dem_calloc(1, sizeof *d);
+    dem_dict *d = dem_calloc(1, sizeof *d);
     d->name = xstrdup(name);
     d->file = xstrdup(file);
     d->line = line;
@@ -323,7 +323,7 @@ static void entry_clear(entry *e)
     memset(e, 0, sizeof *e);
 }
 
-static entry *find(const dict *d, const char *key)
+static entry *find(const dem_dict *d, const char *key)
 {
     for (int i = 0; i < d->n; i++)
         if (strcmp(d->ent[i].key, key) == 0) return &d->ent[i];
@@ -332,7 +332,7 @@ static entry *find(const dict *d, const char *key)
 
 /* Takes ownership of key. A repeated key replaces the earlier entry (OpenFOAM: the
  * later one wins); it keeps the earlier position so iteration order stays stable. */
-static entry *add_entry(dict *d, char *key, const char *file, int line)
+static entry *add_entry(dem_dict *d, char *key, const char *file, int line)
 {
     entry *e = find(d, key);
     if (e) {
@@ -360,7 +360,7 @@ static void push_token(entry *e, token t)
     e->tok[e->ntok++] = t;
 }
 
-static void mark_all_used(dict *d)
+static void mark_all_used(dem_dict *d)
 {
     for (int i = 0; i < d->n; i++) {
         d->ent[i].used = 1;
@@ -410,9 +410,9 @@ static void parse_value(lexer *lx, entry *e)
     }
 }
 
-static void parse_body(lexer *lx, dict *d, int depth, int braced);
+static void parse_body(lexer *lx, dem_dict *d, int depth, int braced);
 
-static void parse_include(lexer *lx, dict *d, int depth, const token *directive)
+static void parse_include(lexer *lx, dem_dict *d, int depth, const token *directive)
 {
     int if_present = strcmp(directive->text, "#includeIfPresent") == 0;
     if (strcmp(directive->text, "#include") != 0 && !if_present)
@@ -451,7 +451,7 @@ static void parse_include(lexer *lx, dict *d, int depth, const token *directive)
 }
 
 /* Entries until '}' (braced) or end of file (top level of a file). */
-static void parse_body(lexer *lx, dict *d, int depth, int braced)
+static void parse_body(lexer *lx, dem_dict *d, int depth, int braced)
 {
     for (;;) {
         token t = lex_next(lx);
@@ -491,7 +491,7 @@ static void parse_body(lexer *lx, dict *d, int depth, int braced)
             int brace_line = nx->line;
             lex_next(lx);
             lx->in_entry = 0;
-            dict *sub = dict_new(e->key, lx->file, brace_line, d);
+            dem_dict *sub = dict_new(e->key, lx->file, brace_line, d);
             e->sub = sub;
             parse_body(lx, sub, depth + 1, 1);   /* e may move only if d grows, not sub */
             if (depth == 0 && strcmp(sub->name, "FoamFile") == 0) {
@@ -507,20 +507,20 @@ static void parse_body(lexer *lx, dict *d, int depth, int braced)
     }
 }
 
-dict *dem_dict_read(const char *path)
+dem_dict *dem_dict_read(const char *path)
 {
     const char *why = NULL;
     char *buf = read_file(path, &why);
     if (!buf) fatal_at(path, 0, NULL, "cannot read dictionary file: %s", why);
     const char *slash = strrchr(path, '/');
-    dict *d = dict_new(slash ? slash + 1 : path, path, 1, NULL);
+    dem_dict *d = dict_new(slash ? slash + 1 : path, path, 1, NULL);
     lexer lx = { path, buf, 0, 1, 0, "", 0, { T_EOF, 0, 0, NULL }, 0 };
     parse_body(&lx, d, 0, 0);
     free(buf);
     return d;
 }
 
-void dem_dict_free(dict *d)
+void dem_dict_free(dem_dict *d)
 {
     if (!d) return;
     for (int i = 0; i < d->n; i++) entry_clear(&d->ent[i]);
@@ -534,11 +534,11 @@ void dem_dict_free(dict *d)
 
 /* ------------------------------------------------------------------ info and iteration */
 
-const char *dem_dict_path(const dict *d) { return d->file; }
-const char *dem_dict_name(const dict *d) { return d->name; }
-int dem_dict_line(const dict *d) { return d->line; }
+const char *dem_dict_path(const dem_dict *d) { return d->file; }
+const char *dem_dict_name(const dem_dict *d) { return d->name; }
+int dem_dict_line(const dem_dict *d) { return d->line; }
 
-int dem_dict_key_line(const dict *d, const char *key)
+int dem_dict_key_line(const dem_dict *d, const char *key)
 {
     const entry *e = find(d, key);
     return e ? e->line : d->line;
@@ -546,9 +546,9 @@ int dem_dict_key_line(const dict *d, const char *key)
 
 /* Accessors take `const dict *` but record what was asked; the bookkeeping is not part
  * of the dictionary's observable contents, so casting away const is deliberate. */
-static void record(const dict *cd, const char *key)
+static void record(const dem_dict *cd, const char *key)
 {
-    dict *d = (dict *)cd;
+    dem_dict *d = (dem_dict *)cd;
     for (int i = 0; i < d->nasked; i++)
         if (strcmp(d->asked[i], key) == 0) return;
     if (d->nasked == d->capasked) {
@@ -559,7 +559,7 @@ static void record(const dict *cd, const char *key)
 }
 
 /* Records the key; marks the entry used if present. */
-static entry *lookup(const dict *d, const char *key)
+static entry *lookup(const dem_dict *d, const char *key)
 {
     record(d, key);
     entry *e = find(d, key);
@@ -567,7 +567,7 @@ static entry *lookup(const dict *d, const char *key)
     return e;
 }
 
-static entry *require(const dict *d, const char *key)
+static entry *require(const dem_dict *d, const char *key)
 {
     entry *e = lookup(d, key);
     if (e) return e;
@@ -583,28 +583,28 @@ static entry *require(const dict *d, const char *key)
     fatal_at(d->file, d->line, key, "required entry missing in '%s'", scope);
 }
 
-int dem_dict_has(const dict *d, const char *key)
+int dem_dict_has(const dem_dict *d, const char *key)
 {
     /* Presence checks count as asking (for suggestions) but not as reading. */
     record(d, key);
     return find(d, key) != NULL;
 }
 
-int dem_dict_size(const dict *d) { return d->n; }
+int dem_dict_size(const dem_dict *d) { return d->n; }
 
-const char *dem_dict_key_at(const dict *d, int i)
+const char *dem_dict_key_at(const dem_dict *d, int i)
 {
     if (i < 0 || i >= d->n) dem_dict_fatal_here(d, "internal: entry index %d out of range [0, %d)", i, d->n);
     return d->ent[i].key;
 }
 
-int dem_dict_is_dict_at(const dict *d, int i)
+int dem_dict_is_dict_at(const dem_dict *d, int i)
 {
     if (i < 0 || i >= d->n) dem_dict_fatal_here(d, "internal: entry index %d out of range [0, %d)", i, d->n);
     return d->ent[i].sub != NULL;
 }
 
-dict *dem_dict_dict_at(const dict *d, int i)
+dem_dict *dem_dict_dict_at(const dem_dict *d, int i)
 {
     if (i < 0 || i >= d->n) dem_dict_fatal_here(d, "internal: entry index %d out of range [0, %d)", i, d->n);
     entry *e = &d->ent[i];
@@ -614,14 +614,14 @@ dict *dem_dict_dict_at(const dict *d, int i)
     return e->sub;
 }
 
-dict *dem_dict_sub(const dict *d, const char *key)
+dem_dict *dem_dict_sub(const dem_dict *d, const char *key)
 {
     entry *e = require(d, key);
     if (!e->sub) fatal_at(e->file, e->line, key, "expected a sub-dictionary { ... }");
     return e->sub;
 }
 
-dict *dem_dict_sub_opt(const dict *d, const char *key)
+dem_dict *dem_dict_sub_opt(const dem_dict *d, const char *key)
 {
     entry *e = lookup(d, key);
     if (!e) return NULL;
@@ -706,12 +706,12 @@ static double scalar_of(const entry *e, double lo, double hi)
     return v;
 }
 
-double dem_dict_scalar(const dict *d, const char *key, double lo, double hi)
+double dem_dict_scalar(const dem_dict *d, const char *key, double lo, double hi)
 {
     return scalar_of(require(d, key), lo, hi);
 }
 
-double dem_dict_scalar_opt(const dict *d, const char *key, double def, double lo, double hi)
+double dem_dict_scalar_opt(const dem_dict *d, const char *key, double def, double lo, double hi)
 {
     entry *e = lookup(d, key);
     return e ? scalar_of(e, lo, hi) : def;
@@ -729,12 +729,12 @@ static long label_of(const entry *e, long lo, long hi)
     return l;
 }
 
-long dem_dict_label(const dict *d, const char *key, long lo, long hi)
+long dem_dict_label(const dem_dict *d, const char *key, long lo, long hi)
 {
     return label_of(require(d, key), lo, hi);
 }
 
-long dem_dict_label_opt(const dict *d, const char *key, long def, long lo, long hi)
+long dem_dict_label_opt(const dem_dict *d, const char *key, long def, long lo, long hi)
 {
     entry *e = lookup(d, key);
     return e ? label_of(e, lo, hi) : def;
@@ -752,7 +752,7 @@ static int switch_value(const token *t)
     return -1;
 }
 
-int dem_dict_bool_opt(const dict *d, const char *key, int def)
+int dem_dict_bool_opt(const dem_dict *d, const char *key, int def)
 {
     entry *e = lookup(d, key);
     if (!e) return def;
@@ -837,14 +837,14 @@ static void read_vec3(cursor *c, double out[3])
     if (n != 3) fatal_at(e->file, line, e->key, "wrong vector length: expected 3 numbers (x y z), got %d", n);
 }
 
-void dem_dict_vector(const dict *d, const char *key, double out[3])
+void dem_dict_vector(const dem_dict *d, const char *key, double out[3])
 {
     cursor c = { require(d, key), 0 };
     read_vec3(&c, out);
     value_end(&c);
 }
 
-void dem_dict_vector_opt(const dict *d, const char *key, double out[3], const double def[3])
+void dem_dict_vector_opt(const dem_dict *d, const char *key, double out[3], const double def[3])
 {
     entry *e = lookup(d, key);
     if (!e) {
@@ -856,7 +856,7 @@ void dem_dict_vector_opt(const dict *d, const char *key, double out[3], const do
     value_end(&c);
 }
 
-int dem_dict_scalar_or_vector(const dict *d, const char *key, double lo, double hi, double out[3])
+int dem_dict_scalar_or_vector(const dem_dict *d, const char *key, double lo, double hi, double out[3])
 {
     entry *e = require(d, key);
     if (!e->sub && e->ntok == 1) {
@@ -877,7 +877,7 @@ int dem_dict_scalar_or_vector(const dict *d, const char *key, double lo, double 
     return 3;
 }
 
-void dem_dict_bools3_opt(const dict *d, const char *key, int out[3], int def)
+void dem_dict_bools3_opt(const dem_dict *d, const char *key, int out[3], int def)
 {
     entry *e = lookup(d, key);
     if (!e) {
@@ -906,7 +906,7 @@ void dem_dict_bools3_opt(const dict *d, const char *key, int out[3], int def)
     value_end(&c);
 }
 
-int dem_dict_scalar_list(const dict *d, const char *key, double **out)
+int dem_dict_scalar_list(const dem_dict *d, const char *key, double **out)
 {
     cursor c = { require(d, key), 0 };
     const entry *e = c.e;
@@ -927,7 +927,7 @@ int dem_dict_scalar_list(const dict *d, const char *key, double **out)
     return n;
 }
 
-int dem_dict_vector_list(const dict *d, const char *key, double **out)
+int dem_dict_vector_list(const dem_dict *d, const char *key, double **out)
 {
     cursor c = { require(d, key), 0 };
     const entry *e = c.e;
@@ -959,9 +959,9 @@ static const char *word_of(const entry *e)
     return t->text;
 }
 
-const char *dem_dict_word(const dict *d, const char *key) { return word_of(require(d, key)); }
+const char *dem_dict_word(const dem_dict *d, const char *key) { return word_of(require(d, key)); }
 
-const char *dem_dict_word_opt(const dict *d, const char *key, const char *def)
+const char *dem_dict_word_opt(const dem_dict *d, const char *key, const char *def)
 {
     entry *e = lookup(d, key);
     return e ? word_of(e) : def;
@@ -984,12 +984,12 @@ static int choice_of(const entry *e, const char *const options[])
     fatal_at(e->file, e->line, e->key, "unknown option '%s'; valid options: %s", w, list);
 }
 
-int dem_dict_choice(const dict *d, const char *key, const char *const options[])
+int dem_dict_choice(const dem_dict *d, const char *key, const char *const options[])
 {
     return choice_of(require(d, key), options);
 }
 
-int dem_dict_choice_opt(const dict *d, const char *key, const char *const options[], int def)
+int dem_dict_choice_opt(const dem_dict *d, const char *key, const char *const options[], int def)
 {
     entry *e = lookup(d, key);
     return e ? choice_of(e, options) : def;
@@ -997,7 +997,7 @@ int dem_dict_choice_opt(const dict *d, const char *key, const char *const option
 
 /* ------------------------------------------------------------------ checks and errors */
 
-void dem_dict_check_unused(const dict *d)
+void dem_dict_check_unused(const dem_dict *d)
 {
     for (int i = 0; i < d->n; i++) {
         const entry *e = &d->ent[i];
@@ -1014,7 +1014,7 @@ void dem_dict_check_unused(const dict *d)
     }
 }
 
-void dem_dict_fatal(const dict *d, const char *key, const char *fmt, ...)
+void dem_dict_fatal(const dem_dict *d, const char *key, const char *fmt, ...)
 {
     const entry *e = find(d, key);
     va_list ap;
@@ -1022,7 +1022,7 @@ void dem_dict_fatal(const dict *d, const char *key, const char *fmt, ...)
     vfatal_at(e ? e->file : d->file, e ? e->line : d->line, key, fmt, ap);
 }
 
-void dem_dict_fatal_here(const dict *d, const char *fmt, ...)
+void dem_dict_fatal_here(const dem_dict *d, const char *fmt, ...)
 {
     char scope[256], msg[1024];
     va_list ap;

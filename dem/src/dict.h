@@ -16,65 +16,65 @@
 
 #include <stddef.h>
 
-typedef struct dict dict;
+typedef struct dem_dict dem_dict;
 
-dict *dem_dict_read(const char *path);            /* fatal on I/O or syntax error */
-void dem_dict_free(dict *d);
+dem_dict *dem_dict_read(const char *path);            /* fatal on I/O or syntax error */
+void dem_dict_free(dem_dict *d);
 
-const char *dem_dict_path(const dict *d);          /* file the dictionary (or key) came from */
-const char *dem_dict_name(const dict *d);          /* "demProperties", or the sub-dictionary's key */
-int dem_dict_line(const dict *d);                  /* line of the opening brace (1 for the file) */
-int dem_dict_key_line(const dict *d, const char *key); /* line of key, or dem_dict_line(d) if absent */
+const char *dem_dict_path(const dem_dict *d);          /* file the dictionary (or key) came from */
+const char *dem_dict_name(const dem_dict *d);          /* "demProperties", or the sub-dictionary's key */
+int dem_dict_line(const dem_dict *d);                  /* line of the opening brace (1 for the file) */
+int dem_dict_key_line(const dem_dict *d, const char *key); /* line of key, or dem_dict_line(d) if absent */
 
 /* Presence and iteration (in file order). */
-int dem_dict_has(const dict *d, const char *key);
-int dem_dict_size(const dict *d);
-const char *dem_dict_key_at(const dict *d, int i);
-int dem_dict_is_dict_at(const dict *d, int i);
-dict *dem_dict_dict_at(const dict *d, int i);       /* marks the entry used */
+int dem_dict_has(const dem_dict *d, const char *key);
+int dem_dict_size(const dem_dict *d);
+const char *dem_dict_key_at(const dem_dict *d, int i);
+int dem_dict_is_dict_at(const dem_dict *d, int i);
+dem_dict *dem_dict_dict_at(const dem_dict *d, int i);       /* marks the entry used */
 
 /* Sub-dictionaries. */
-dict *dem_dict_sub(const dict *d, const char *key);       /* fatal if missing or not a dict */
-dict *dem_dict_sub_opt(const dict *d, const char *key);   /* NULL if missing */
+dem_dict *dem_dict_sub(const dem_dict *d, const char *key);       /* fatal if missing or not a dict */
+dem_dict *dem_dict_sub_opt(const dem_dict *d, const char *key);   /* NULL if missing */
 
 /* Scalars with a range check [lo, hi] (fatal outside; message names file, line, key, range). */
-double dem_dict_scalar(const dict *d, const char *key, double lo, double hi);
-double dem_dict_scalar_opt(const dict *d, const char *key, double def, double lo, double hi);
-long dem_dict_label(const dict *d, const char *key, long lo, long hi);
-long dem_dict_label_opt(const dict *d, const char *key, long def, long lo, long hi);
+double dem_dict_scalar(const dem_dict *d, const char *key, double lo, double hi);
+double dem_dict_scalar_opt(const dem_dict *d, const char *key, double def, double lo, double hi);
+long dem_dict_label(const dem_dict *d, const char *key, long lo, long hi);
+long dem_dict_label_opt(const dem_dict *d, const char *key, long def, long lo, long hi);
 
 /* true/false, yes/no, on/off. */
-int dem_dict_bool_opt(const dict *d, const char *key, int def);
+int dem_dict_bool_opt(const dem_dict *d, const char *key, int def);
 
 /* Vectors: exactly three numbers in parentheses. */
-void dem_dict_vector(const dict *d, const char *key, double out[3]);
-void dem_dict_vector_opt(const dict *d, const char *key, double out[3], const double def[3]);
+void dem_dict_vector(const dem_dict *d, const char *key, double out[3]);
+void dem_dict_vector_opt(const dem_dict *d, const char *key, double out[3], const double def[3]);
 /* One number `s` (returns 1; out = (s s s)) or a vector `(a b c)` (returns 3), each value in
  * [lo, hi]; e.g. a lattice spacing. */
-int dem_dict_scalar_or_vector(const dict *d, const char *key, double lo, double hi, double out[3]);
+int dem_dict_scalar_or_vector(const dem_dict *d, const char *key, double lo, double hi, double out[3]);
 /* Three booleans in parentheses, e.g. periodic (false false true). */
-void dem_dict_bools3_opt(const dict *d, const char *key, int out[3], int def);
+void dem_dict_bools3_opt(const dem_dict *d, const char *key, int out[3], int def);
 
 /* Words. dem_dict_choice returns the index in options[] (NULL-terminated); anything else is
  * fatal and the message lists the options and the nearest one. */
-const char *dem_dict_word(const dict *d, const char *key);
-const char *dem_dict_word_opt(const dict *d, const char *key, const char *def);
-int dem_dict_choice(const dict *d, const char *key, const char *const options[]);
-int dem_dict_choice_opt(const dict *d, const char *key, const char *const options[], int def);
+const char *dem_dict_word(const dem_dict *d, const char *key);
+const char *dem_dict_word_opt(const dem_dict *d, const char *key, const char *def);
+int dem_dict_choice(const dem_dict *d, const char *key, const char *const options[]);
+int dem_dict_choice_opt(const dem_dict *d, const char *key, const char *const options[], int def);
 
 /* List of numbers `(a b c ...)`; returns the count, *out malloc'd (caller frees). */
-int dem_dict_scalar_list(const dict *d, const char *key, double **out);
+int dem_dict_scalar_list(const dem_dict *d, const char *key, double **out);
 /* List of vectors `((x y z) (x y z) ...)`; returns the count, *out malloc'd as 3*count doubles. */
-int dem_dict_vector_list(const dict *d, const char *key, double **out);
+int dem_dict_vector_list(const dem_dict *d, const char *key, double **out);
 
 /* Report the first key (recursively, in sub-dictionaries) that no accessor asked for. */
-void dem_dict_check_unused(const dict *d);
+void dem_dict_check_unused(const dem_dict *d);
 
 /* Fatal error about `key` in d, with file and line: "<file>:<line>: error: key '<key>': <msg>". */
-void dem_dict_fatal(const dict *d, const char *key, const char *fmt, ...)
+void dem_dict_fatal(const dem_dict *d, const char *key, const char *fmt, ...)
     __attribute__((format(printf, 3, 4), noreturn));
 /* Same, at the line of the dictionary itself. */
-void dem_dict_fatal_here(const dict *d, const char *fmt, ...)
+void dem_dict_fatal_here(const dem_dict *d, const char *fmt, ...)
     __attribute__((format(printf, 2, 3), noreturn));
 
 #endif

@@ -5,7 +5,7 @@
 #include "error.h"
 #include "system.h"
 
-void dem_ghosts_free(ghost_list *g)
+void dem_ghosts_free(dem_ghost_list *g)
 {
     free(g->owner);
     free(g->shift);
@@ -15,8 +15,8 @@ void dem_ghosts_free(ghost_list *g)
 /* A copy of particle src (real or ghost) shifted by `shift` along direction d. */
 static void add_image(dem_system *s, int src, int d, double shift)
 {
-    particles *p = &s->p;
-    ghost_list *g = &s->ghosts;
+    dem_particles *p = &s->p;
+    dem_ghost_list *g = &s->ghosts;
     if (g->n == g->capacity) {
         g->capacity = g->capacity ? 2 * g->capacity : 1024;
         g->owner = dem_realloc(g->owner, (size_t)g->capacity * sizeof *g->owner);
@@ -34,7 +34,7 @@ static void add_image(dem_system *s, int src, int d, double shift)
 
 void dem_ghosts_build(dem_system *s, double cutoff)
 {
-    const particles *p = &s->p;
+    const dem_particles *p = &s->p;
     s->ghosts.n = 0;
     for (int d = 0; d < 3; d++) {
         if (!s->periodic[d]) continue;
@@ -49,8 +49,8 @@ void dem_ghosts_build(dem_system *s, double cutoff)
 
 void dem_ghosts_update(dem_system *s)
 {
-    particles *p = &s->p;
-    const ghost_list *g = &s->ghosts;
+    dem_particles *p = &s->p;
+    const dem_ghost_list *g = &s->ghosts;
     for (int k = 0; k < g->n; k++) {
         const int i = p->n + k, o = g->owner[k];
         for (int q = 0; q < 3; q++) {
@@ -65,8 +65,8 @@ void dem_ghosts_update(dem_system *s)
 
 void dem_ghosts_fold_forces(dem_system *s)
 {
-    particles *p = &s->p;
-    const ghost_list *g = &s->ghosts;
+    dem_particles *p = &s->p;
+    const dem_ghost_list *g = &s->ghosts;
     for (int k = 0; k < g->n; k++) {
         const int i = p->n + k, o = g->owner[k];
         for (int q = 0; q < 3; q++) {

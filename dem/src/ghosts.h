@@ -14,14 +14,14 @@
 
 #include "particles.h"
 
-typedef struct ghost_list {
+typedef struct dem_ghost_list {
     int n, capacity;
     int *owner;        /* the real particle each ghost copies */
-    vec3 *shift;       /* ghost position - owner position [m] */
-} ghost_list;
+    dem_vec3 *shift;       /* ghost position - owner position [m] */
+} dem_ghost_list;
 
 struct dem_system;
-void dem_ghosts_free(ghost_list *g);
+void dem_ghosts_free(dem_ghost_list *g);
 /* Make the images of the particles within cutoff [m] of a periodic side (after the real
  * particles were wrapped into the box). */
 void dem_ghosts_build(struct dem_system *s, double cutoff);

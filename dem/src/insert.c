@@ -12,7 +12,7 @@
 #include "rng.h"
 #include "system.h"
 
-double dem_insertion_max_diameter(const insertion *ins)
+double dem_insertion_max_diameter(const dem_insertion *ins)
 {
     switch (ins->dist) {
     case SIZE_CONSTANT: return ins->d_value;
@@ -27,7 +27,7 @@ double dem_insertion_max_diameter(const insertion *ins)
     return 0.0;
 }
 
-double dem_insertion_draw_diameter(const insertion *ins, rng *r)
+double dem_insertion_draw_diameter(const dem_insertion *ins, dem_rng *r)
 {
     switch (ins->dist) {
     case SIZE_CONSTANT: return ins->d_value;
@@ -51,7 +51,7 @@ double dem_insertion_draw_diameter(const insertion *ins, rng *r)
     return 0.0;
 }
 
-static void draw_position(const insertion *ins, double radius, rng *r, double x[3])
+static void draw_position(const dem_insertion *ins, double radius, dem_rng *r, double x[3])
 {
     if (ins->region == REGION_BOX) {
         for (int d = 0; d < 3; d++)
@@ -70,7 +70,7 @@ static void draw_position(const insertion *ins, double radius, rng *r, double x[
     x[c] = ins->centre[1] + reach * w;
 }
 
-static double region_volume(const insertion *ins)
+static double region_volume(const dem_insertion *ins)
 {
     if (ins->region == REGION_BOX)
         return (ins->max[0] - ins->min[0]) * (ins->max[1] - ins->min[1]) * (ins->max[2] - ins->min[2]);
@@ -94,7 +94,7 @@ static int grid_cell(const grid *g, const double x[3], int c[3])
     return (c[2] * g->n[1] + c[1]) * g->n[0] + c[0];
 }
 
-static void grid_add(grid *g, const particles *p, int i)
+static void grid_add(grid *g, const dem_particles *p, int i)
 {
     int c[3];
     const int cell = grid_cell(g, p->x[i], c);
@@ -128,7 +128,7 @@ static void grid_init(grid *g, const dem_system *s, double dmax, long expected, 
 /* The first particle j whose centre is closer to x than factor (radius + r_j), or -1. */
 static int find_overlap(const dem_system *s, const grid *g, const double x[3], double radius, double factor)
 {
-    const particles *p = &s->p;
+    const dem_particles *p = &s->p;
     int c[3];
     grid_cell(g, x, c);
     for (int oz = -1; oz <= 1; oz++)
@@ -167,9 +167,9 @@ static int overlaps(const dem_system *s, const grid *g, const double x[3], doubl
     return 0;
 }
 
-long dem_insertion_run(dem_system *s, const insertion *ins)
+long dem_insertion_run(dem_system *s, const dem_insertion *ins)
 {
-    particles *p = &s->p;
+    dem_particles *p = &s->p;
     double dmax = dem_insertion_max_diameter(ins);
     for (int i = 0; i < p->n; i++) dmax = fmax(dmax, 2.0 * p->radius[i]);
     grid g;
@@ -181,7 +181,7 @@ long dem_insertion_run(dem_system *s, const insertion *ins)
     grid_init(&g, s, dmax, expected, capacity);
     for (int i = 0; i < p->n; i++) grid_add(&g, p, i);
 
-    rng r;
+    dem_rng r;
     rng_seed(&r, ins->seed);
     const double density = s->materials.mat[ins->material].density;
     long placed = 0;
@@ -224,15 +224,15 @@ long dem_insertion_run(dem_system *s, const insertion *ins)
 
 /* ------------------------------------------------------------------ given particles */
 
-void dem_insert_batch_init(insert_batch *b) { memset(b, 0, sizeof *b); }
+void dem_insert_batch_init(dem_insert_batch *b) { memset(b, 0, sizeof *b); }
 
-void dem_insert_batch_free(insert_batch *b)
+void dem_insert_batch_free(dem_insert_batch *b)
 {
     free(b->x); free(b->v); free(b->diameter); free(b->material); free(b->line);
     memset(b, 0, sizeof *b);
 }
 
-long dem_insert_batch_push(insert_batch *b, const double x[3], const double v[3], double diameter, int material, int line)
+long dem_insert_batch_push(dem_insert_batch *b, const double x[3], const double v[3], double diameter, int material, int line)
 {
     if (b->n == b->capacity) {
         b->capacity = b->capacity ? 2 * b->capacity : 1024;
@@ -251,10 +251,10 @@ long dem_insert_batch_push(insert_batch *b, const double x[3], const double v[3]
 }
 
 typedef struct batch_where {
-    const insertion *ins;
-    const insert_batch *b;
+    const dem_insertion *ins;
+    const dem_insert_batch *b;
     const char *file;
-    const dict *entry;
+    const dem_dict *entry;
     const char *key;
 } batch_where;
 
@@ -278,10 +278,10 @@ static void batch_fatal(const batch_where *w, long i, const char *fmt, ...)
                x[0], x[1], x[2], msg);
 }
 
-long dem_insertion_add_batch(dem_system *s, const insertion *ins, const insert_batch *b,
-                         const char *file, const dict *entry, const char *key)
+long dem_insertion_add_batch(dem_system *s, const dem_insertion *ins, const dem_insert_batch *b,
+                         const char *file, const dem_dict *entry, const char *key)
 {
-    particles *p = &s->p;
+    dem_particles *p = &s->p;
     const batch_where w = {ins, b, file, entry, key};
     const int n0 = p->n;
     double dmax = 0.0;

@@ -16,14 +16,14 @@
 #include "particles.h"
 #include "rng.h"
 
-enum insertion_method { INSERT_RANDOM, INSERT_LATTICE, INSERT_FILE };
-enum size_distribution { SIZE_CONSTANT, SIZE_UNIFORM, SIZE_NORMAL, SIZE_DISCRETE };
-enum region_kind { REGION_BOX, REGION_CYLINDER };
+enum dem_insertion_method { INSERT_RANDOM, INSERT_LATTICE, INSERT_FILE };
+enum dem_size_distribution { SIZE_CONSTANT, SIZE_UNIFORM, SIZE_NORMAL, SIZE_DISCRETE };
+enum dem_region_kind { REGION_BOX, REGION_CYLINDER };
 
-typedef struct insertion {
+typedef struct dem_insertion {
     char name[64];
-    enum insertion_method method;
-    enum region_kind region;
+    enum dem_insertion_method method;
+    enum dem_region_kind region;
     double min[3], max[3];          /* box; for a cylinder the axial range is min/max[axis] */
     int axis;                       /* cylinder */
     double centre[2], radius;       /* cylinder */
@@ -32,7 +32,7 @@ typedef struct insertion {
     int material;                   /* -1: none given (file: then every line must name one) */
     double velocity[3];
     int has_diameter;               /* file: a diameter entry was given */
-    enum size_distribution dist;
+    enum dem_size_distribution dist;
     double d_value, d_min, d_max, d_mean, d_std;  /* diameters [m] */
     int ndiscrete;
     double *d_values, *d_weights;
@@ -41,46 +41,46 @@ typedef struct insertion {
     double spacing[3];              /* lattice [m] */
     double down[3];                 /* lattice: unit vector along gravity (-z without gravity) */
     char file[4096];                /* file: the resolved path */
-} insertion;
+} dem_insertion;
 
 /* Particles given one by one (lattice points, file lines), before they are placed. */
-typedef struct insert_batch {
+typedef struct dem_insert_batch {
     long n, capacity;
-    vec3 *x, *v;
+    dem_vec3 *x, *v;
     double *diameter;               /* [m] */
     int *material;
     int *line;                      /* file line of each particle (file insertions) */
-} insert_batch;
+} dem_insert_batch;
 
-void dem_insert_batch_init(insert_batch *b);
-void dem_insert_batch_free(insert_batch *b);
-long dem_insert_batch_push(insert_batch *b, const double x[3], const double v[3], double diameter, int material, int line);
+void dem_insert_batch_init(dem_insert_batch *b);
+void dem_insert_batch_free(dem_insert_batch *b);
+long dem_insert_batch_push(dem_insert_batch *b, const double x[3], const double v[3], double diameter, int material, int line);
 
 struct dem_system;
-struct dict;
+struct dem_dict;
 /* Random insertion; fatal (naming the insertion) when the particles do not fit. Returns the count. */
-long dem_insertion_run(struct dem_system *s, const insertion *ins);
-double dem_insertion_max_diameter(const insertion *ins);
-double dem_insertion_draw_diameter(const insertion *ins, rng *r);
+long dem_insertion_run(struct dem_system *s, const dem_insertion *ins);
+double dem_insertion_max_diameter(const dem_insertion *ins);
+double dem_insertion_draw_diameter(const dem_insertion *ins, dem_rng *r);
 
 /* Lattice points of the region, in order (x fastest, then y, then z), keeping the lowest
  * ins->number along ins->down when number > 0. Fatal (naming `key` of `entry`) when the
  * lattice holds fewer points. Returns the count; *xyz malloc'd, 3 doubles per point. */
-long dem_lattice_points(const insertion *ins, const struct dict *entry, double **xyz);
+long dem_lattice_points(const dem_insertion *ins, const struct dem_dict *entry, double **xyz);
 /* Lattice insertion: the points, diameters drawn from the distribution (seed), checked and placed. */
-long dem_insertion_lattice(struct dem_system *s, const insertion *ins, const struct dict *entry);
+long dem_insertion_lattice(struct dem_system *s, const dem_insertion *ins, const struct dem_dict *entry);
 
 /* Read a positions file into b (formats in insert_file.c); fatal with "<file>:<line>: ..." on
  * any error. Columns missing from a line take the insertion's diameter, velocity, material. */
-void dem_insert_file_read(const struct dem_system *s, const insertion *ins, insert_batch *b);
+void dem_insert_file_read(const struct dem_system *s, const dem_insertion *ins, dem_insert_batch *b);
 /* File insertion: read, check and place. */
-long dem_insertion_file(struct dem_system *s, const insertion *ins, const struct dict *entry);
+long dem_insertion_file(struct dem_system *s, const dem_insertion *ins, const struct dem_dict *entry);
 
 /* Check each particle of b (centre inside the domain, on the particle side of every symmetry
  * plane, no wall overlap, no overlap with any particle placed before or earlier in b: centre
  * distance >= (r_i + r_j)(1 - 1e-9)) and add it. Errors name file:line when b->line is set and
  * `file` is given, else the point and `key` of `entry`. Returns the count. */
-long dem_insertion_add_batch(struct dem_system *s, const insertion *ins, const insert_batch *b,
-                         const char *file, const struct dict *entry, const char *key);
+long dem_insertion_add_batch(struct dem_system *s, const dem_insertion *ins, const dem_insert_batch *b,
+                         const char *file, const struct dem_dict *entry, const char *key);
 
 #endif

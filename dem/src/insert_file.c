@@ -32,9 +32,9 @@ typedef struct reader {
     size_t len, pos;
     int line;
     const dem_system *s;
-    const insertion *ins;
-    insert_batch *b;
-    rng r;
+    const dem_insertion *ins;
+    dem_insert_batch *b;
+    dem_rng r;
 } reader;
 
 static void file_fatal(const reader *rd, int line, const char *fmt, ...)
@@ -96,7 +96,7 @@ static double number_or_fatal(const reader *rd, int line, const char *text, size
 
 static void push(reader *rd, int line, const double x[3], const double *v, double d, int material)
 {
-    const insertion *ins = rd->ins;
+    const dem_insertion *ins = rd->ins;
     if (isnan(d)) {
         if (!ins->has_diameter)
             file_fatal(rd, line, "no diameter column, and insertion '%s' has no 'diameter' entry: give one of "
@@ -319,7 +319,7 @@ static int looks_like_vector_field(reader *rd)
     return is_p(&t, '(');
 }
 
-void dem_insert_file_read(const dem_system *s, const insertion *ins, insert_batch *b)
+void dem_insert_file_read(const dem_system *s, const dem_insertion *ins, dem_insert_batch *b)
 {
     reader rd;
     memset(&rd, 0, sizeof rd);
@@ -342,9 +342,9 @@ void dem_insert_file_read(const dem_system *s, const insertion *ins, insert_batc
     if (b->n == 0) file_fatal(&rd, 0, "no positions in the file");
 }
 
-long dem_insertion_file(dem_system *s, const insertion *ins, const dict *entry)
+long dem_insertion_file(dem_system *s, const dem_insertion *ins, const dem_dict *entry)
 {
-    insert_batch b;
+    dem_insert_batch b;
     dem_insert_batch_init(&b);
     dem_insert_file_read(s, ins, &b);
     const long placed = dem_insertion_add_batch(s, ins, &b, ins->file, entry, "file");

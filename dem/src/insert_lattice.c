@@ -37,7 +37,7 @@ static int by_height(const void *a, const void *b)
     return (x->i > y->i) - (x->i < y->i);
 }
 
-long dem_lattice_points(const insertion *ins, const dict *entry, double **xyz)
+long dem_lattice_points(const dem_insertion *ins, const dem_dict *entry, double **xyz)
 {
     double lo[3], hi[3];
     const int a = ins->axis, b = (a + 1) % 3, c = (a + 2) % 3;
@@ -104,13 +104,13 @@ long dem_lattice_points(const insertion *ins, const dict *entry, double **xyz)
     return count;
 }
 
-long dem_insertion_lattice(dem_system *s, const insertion *ins, const dict *entry)
+long dem_insertion_lattice(dem_system *s, const dem_insertion *ins, const dem_dict *entry)
 {
     double *pts;
     const long n = dem_lattice_points(ins, entry, &pts);
-    insert_batch b;
+    dem_insert_batch b;
     dem_insert_batch_init(&b);
-    rng r;
+    dem_rng r;
     rng_seed(&r, ins->seed);
     for (long i = 0; i < n; i++)
         dem_insert_batch_push(&b, pts + 3 * i, ins->velocity, dem_insertion_draw_diameter(ins, &r), ins->material, 0);

@@ -22,44 +22,44 @@
 
 #include "particles.h"
 
-typedef struct particle_writer particle_writer;
+typedef struct dem_particle_writer dem_particle_writer;
 
 /* Contact history in a form independent of particle order and neighbour lists (contacts.h). */
-typedef struct contact_state {
+typedef struct dem_contact_state {
     int history_size;        /* doubles per contact */
     int nwalls;              /* walls of the case that wrote it (wall contacts name their index) */
     long count;
     int64_t *keys;           /* 2 per contact: ids (i, j), or (-1 - wall, particle id) */
     double *history;         /* history_size per contact */
     int forces_read;         /* reader: p->f and p->torque hold the snapshot's forces */
-} contact_state;
+} dem_contact_state;
 
-void dem_contact_state_free(contact_state *cs);
+void dem_contact_state_free(dem_contact_state *cs);
 
 /* base: path without extension, e.g. "case/particles". append != 0 keeps existing snapshots
  * (restart); otherwise the files are created anew. Fatal on HDF5 errors, with the path. */
-particle_writer *dem_io_open_writer(const char *base, int append);
-void dem_io_write_snapshot(particle_writer *w, const particles *p, double time, long step);
+dem_particle_writer *dem_io_open_writer(const char *base, int append);
+void dem_io_write_snapshot(dem_particle_writer *w, const dem_particles *p, double time, long step);
 /* The same, with the contact history (cs may be NULL). */
-void dem_io_write_snapshot_contacts(particle_writer *w, const particles *p, double time, long step,
-                                const contact_state *cs);
-void dem_io_close_writer(particle_writer *w);
+void dem_io_write_snapshot_contacts(dem_particle_writer *w, const dem_particles *p, double time, long step,
+                                const dem_contact_state *cs);
+void dem_io_close_writer(dem_particle_writer *w);
 
 /* Read the last complete snapshot of <base>.h5 into p (p is reset and refilled: the PF_RESTART
  * fields from the snapshot, the others 0; masses are left for the caller to set from the
  * materials). Returns 0 on success, -1 when the file has no complete snapshot; fatal when the
  * file cannot be read. */
-int dem_io_read_last_snapshot(const char *base, particles *p, double *time, long *step);
+int dem_io_read_last_snapshot(const char *base, dem_particles *p, double *time, long *step);
 /* The same, also filling cs with the snapshot's contact history (empty when it has none);
  * cs->forces_read = 1 when the snapshot had p->f and p->torque (restart fields): the restarted
  * run then continues without evaluating the contacts a second time at that step. */
-int dem_io_read_last_snapshot_contacts(const char *base, particles *p, double *time, long *step,
-                                   contact_state *cs);
+int dem_io_read_last_snapshot_contacts(const char *base, dem_particles *p, double *time, long *step,
+                                   dem_contact_state *cs);
 
 /* The snapshot at at_time (the last complete one within tolerance of it; NAN: the last). Returns
  * -1 when there is none; otherwise as dem_io_read_last_snapshot_contacts (cs may be NULL). */
-int dem_io_read_snapshot_at(const char *base, double at_time, double tolerance, particles *p, double *time,
-                        long *step, contact_state *cs);
+int dem_io_read_snapshot_at(const char *base, double at_time, double tolerance, dem_particles *p, double *time,
+                        long *step, dem_contact_state *cs);
 /* Remove the complete snapshots later than after_time (a run continued from an earlier time
  * rewrites them, as OpenFOAM rewrites later time directories). Returns how many. */
 int dem_io_drop_snapshots_after(const char *base, double after_time);

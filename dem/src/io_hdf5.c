@@ -26,7 +26,7 @@ typedef struct snapshot_info {
     int64_t n;
 } snapshot_info;
 
-struct particle_writer {
+struct dem_particle_writer {
     hid_t file;
     char *h5_path;     /* <base>.h5 as given, for messages and opening */
     char *h5_name;     /* file name of the .h5 without directories, used inside the .xdmf */
@@ -262,7 +262,7 @@ static void xml_escape(FILE *f, const char *s)
     }
 }
 
-static void xdmf_item(FILE *f, const particle_writer *w, const char *group, const particle_field *pf,
+static void xdmf_item(FILE *f, const dem_particle_writer *w, const char *group, const dem_particle_field *pf,
                       int64_t n)
 {
     static const char *const number_type[] = {[PF_DOUBLE] = "Float", [PF_INT] = "Int", [PF_INT64] = "Int"};
@@ -275,8 +275,8 @@ static void xdmf_item(FILE *f, const particle_writer *w, const char *group, cons
     fprintf(f, ":/snapshots/%s/%s</DataItem>\n", group, pf->dataset);
 }
 
-static void xdmf_attribute(FILE *f, const particle_writer *w, const char *group,
-                           const particle_field *pf, int64_t n)
+static void xdmf_attribute(FILE *f, const dem_particle_writer *w, const char *group,
+                           const dem_particle_field *pf, int64_t n)
 {
     fprintf(f, "    <Attribute Name=\"%s\" AttributeType=\"%s\" Center=\"Node\">\n", pf->dataset,
             pf->components == 3 ? "Vector" : "Scalar");
@@ -286,7 +286,7 @@ static void xdmf_attribute(FILE *f, const particle_writer *w, const char *group,
 
 /* Rewrite <base>.xdmf through a temporary file and rename, so it is never half written.
  * Snapshots with no particles are left out (zero-sized data items upset readers). */
-static void write_xdmf(const particle_writer *w)
+static void write_xdmf(const dem_particle_writer *w)
 {
     char *tmp = str_cat(w->xdmf_path, ".tmp");
     FILE *f = fopen(tmp, "w");
@@ -333,10 +333,10 @@ static hid_t create_file(const char *path)
     return file;
 }
 
-particle_writer *dem_io_open_writer(const char *base, int append)
+dem_particle_writer *dem_io_open_writer(const char *base, int append)
 {
     h5_quiet();
-    particle_writer *w = dem_calloc(1, sizeof *w);
+    dem_particle_writer *w = dem_calloc(1, sizeof *w);
     w->h5_path = str_cat(base, ".h5");
     w->xdmf_path = str_cat(base, ".xdmf");
     w->h5_name = str_dup(file_name_part(w->h5_path));
@@ -388,18 +388,18 @@ particle_writer *dem_io_open_writer(const char *base, int append)
 }
 
 /* HDF5 types of a field's scalar: in the file (fixed, little endian) and in memory. */
-static hid_t file_type_of(const particle_field *pf)
+static hid_t file_type_of(const dem_particle_field *pf)
 {
     return pf->scalar == PF_DOUBLE ? H5T_IEEE_F64LE : pf->scalar == PF_INT ? H5T_STD_I32LE : H5T_STD_I64LE;
 }
 
-static hid_t memory_type_of(const particle_field *pf)
+static hid_t memory_type_of(const dem_particle_field *pf)
 {
     return pf->scalar == PF_DOUBLE ? H5T_NATIVE_DOUBLE : pf->scalar == PF_INT ? H5T_NATIVE_INT : H5T_NATIVE_INT64;
 }
 
 /* One field of n particles: n values, or n x components; its unit as the `units` attribute. */
-static void write_field(hid_t group, const particle_field *pf, const particles *p, int64_t n,
+static void write_field(hid_t group, const dem_particle_field *pf, const dem_particles *p, int64_t n,
                         const char *path)
 {
     hsize_t dims[2] = {(hsize_t)n, (hsize_t)pf->components};
@@ -416,7 +416,7 @@ static void write_field(hid_t group, const particle_field *pf, const particles *
     H5Sclose(space);
 }
 
-void dem_contact_state_free(contact_state *cs)
+void dem_contact_state_free(dem_contact_state *cs)
 {
     free(cs->keys);
     free(cs->history);
@@ -446,7 +446,7 @@ static void write_matrix(hid_t group, const char *name, hid_t file_type, hid_t m
     H5Sclose(space);
 }
 
-static void write_contacts(hid_t g, const contact_state *cs, const char *path)
+static void write_contacts(hid_t g, const dem_contact_state *cs, const char *path)
 {
     hid_t c = chk(H5Gcreate2(g, "contacts", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), path,
                   "cannot create contacts group");
@@ -457,13 +457,13 @@ static void write_contacts(hid_t g, const contact_state *cs, const char *path)
     H5Gclose(c);
 }
 
-void dem_io_write_snapshot(particle_writer *w, const particles *p, double time, long step)
+void dem_io_write_snapshot(dem_particle_writer *w, const dem_particles *p, double time, long step)
 {
     dem_io_write_snapshot_contacts(w, p, time, step, NULL);
 }
 
-void dem_io_write_snapshot_contacts(particle_writer *w, const particles *p, double time, long step,
-                                const contact_state *cs)
+void dem_io_write_snapshot_contacts(dem_particle_writer *w, const dem_particles *p, double time, long step,
+                                const dem_contact_state *cs)
 {
     const char *path = w->h5_path;
     char name[32];
@@ -501,7 +501,7 @@ void dem_io_write_snapshot_contacts(particle_writer *w, const particles *p, doub
     write_xdmf(w);
 }
 
-void dem_io_close_writer(particle_writer *w)
+void dem_io_close_writer(dem_particle_writer *w)
 {
     if (!w) return;
     if (w->file >= 0) chk(H5Fclose(w->file), w->h5_path, "cannot close file");
@@ -515,7 +515,7 @@ void dem_io_close_writer(particle_writer *w)
 /* ---------------------------------------------------------------- reader */
 
 /* Read one field of n particles; a field the snapshot does not have is set to 0 (returns 0). */
-static int read_field(hid_t group, const particle_field *pf, particles *p, int64_t n, const char *path)
+static int read_field(hid_t group, const dem_particle_field *pf, dem_particles *p, int64_t n, const char *path)
 {
     void *data = particle_field_data(p, pf);
     if (!chk(H5Lexists(group, pf->dataset, H5P_DEFAULT), path, "cannot query dataset")) {
@@ -546,11 +546,11 @@ static int read_field(hid_t group, const particle_field *pf, particles *p, int64
 /* The restart fields of n particles from snapshot group g, the others 0. A restart field the
  * snapshot lacks (written before the field was kept, as torque before the contact history was)
  * is 0 too, with a warning; found[k] says which were there. */
-static void read_restart_fields(hid_t g, particles *p, int64_t n, const char *group, const char *path,
+static void read_restart_fields(hid_t g, dem_particles *p, int64_t n, const char *group, const char *path,
                                 int found[PARTICLE_FIELD_COUNT])
 {
     for (int k = 0; k < PARTICLE_FIELD_COUNT; k++) {
-        const particle_field *pf = &dem_particle_fields[k];
+        const dem_particle_field *pf = &dem_particle_fields[k];
         found[k] = 0;
         if (pf->flags & PF_RESTART) {
             found[k] = read_field(g, pf, p, n, path);
@@ -583,7 +583,7 @@ static void *read_matrix(hid_t group, const char *name, hid_t mem_type, size_t e
     return data;
 }
 
-static void read_contacts(hid_t g, contact_state *cs, const char *path)
+static void read_contacts(hid_t g, dem_contact_state *cs, const char *path)
 {
     memset(cs, 0, sizeof *cs);
     if (!chk(H5Lexists(g, "contacts", H5P_DEFAULT), path, "cannot query contacts group")) return;
@@ -607,19 +607,19 @@ static void read_contacts(hid_t g, contact_state *cs, const char *path)
     H5Gclose(c);
 }
 
-int dem_io_read_last_snapshot(const char *base, particles *p, double *time, long *step)
+int dem_io_read_last_snapshot(const char *base, dem_particles *p, double *time, long *step)
 {
     return dem_io_read_last_snapshot_contacts(base, p, time, step, NULL);
 }
 
-int dem_io_read_last_snapshot_contacts(const char *base, particles *p, double *time, long *step,
-                                   contact_state *cs)
+int dem_io_read_last_snapshot_contacts(const char *base, dem_particles *p, double *time, long *step,
+                                   dem_contact_state *cs)
 {
     return dem_io_read_snapshot_at(base, NAN, 0.0, p, time, step, cs);
 }
 
-int dem_io_read_snapshot_at(const char *base, double at_time, double tolerance, particles *p, double *time,
-                        long *step, contact_state *cs)
+int dem_io_read_snapshot_at(const char *base, double at_time, double tolerance, dem_particles *p, double *time,
+                        long *step, dem_contact_state *cs)
 {
     h5_quiet();
     char *path = str_cat(base, ".h5");

@@ -3,14 +3,14 @@
 
 #include "materials.h"
 
-int dem_materials_find(const material_table *t, const char *name)
+int dem_materials_find(const dem_material_table *t, const char *name)
 {
     for (int i = 0; i < t->ntypes; i++)
         if (strcmp(t->mat[i].name, name) == 0) return i;
     return -1;
 }
 
-void dem_materials_set_model_values(material_table *t, int ti, int tj, enum contact_slot slot,
+void dem_materials_set_model_values(dem_material_table *t, int ti, int tj, enum dem_contact_slot slot,
                                 const void *values, size_t bytes)
 {
     double v[MODEL_VALUES] = {0};
@@ -19,10 +19,10 @@ void dem_materials_set_model_values(material_table *t, int ti, int tj, enum cont
     memcpy(t->pair[tj * DEM_MAX_TYPES + ti].model[slot], v, sizeof v);
 }
 
-void dem_materials_set_pair(material_table *t, int ti, int tj, double restitution, double friction)
+void dem_materials_set_pair(dem_material_table *t, int ti, int tj, double restitution, double friction)
 {
-    const material *a = &t->mat[ti], *b = &t->mat[tj];
-    pair_coeffs c = {0};
+    const dem_material *a = &t->mat[ti], *b = &t->mat[tj];
+    dem_pair_coeffs c = {0};
     c.Y_eff = 1.0 / ((1.0 - a->poisson_ratio * a->poisson_ratio) / a->youngs_modulus +
                      (1.0 - b->poisson_ratio * b->poisson_ratio) / b->youngs_modulus);
     c.G_eff = 1.0 / (2.0 * (2.0 - a->poisson_ratio) * (1.0 + a->poisson_ratio) / a->youngs_modulus +

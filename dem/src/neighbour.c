@@ -7,7 +7,7 @@
 #include "neighbour.h"
 #include "system.h"
 
-void dem_neighbour_init(neighbour_list *nl, double skin, int sort_interval, int history_size)
+void dem_neighbour_init(dem_neighbour_list *nl, double skin, int sort_interval, int history_size)
 {
     memset(nl, 0, sizeof *nl);
     nl->skin = skin;
@@ -15,7 +15,7 @@ void dem_neighbour_init(neighbour_list *nl, double skin, int sort_interval, int 
     nl->history_size = history_size;
 }
 
-void dem_neighbour_free(neighbour_list *nl)
+void dem_neighbour_free(dem_neighbour_list *nl)
 {
     free(nl->start); free(nl->partner); free(nl->history); free(nl->touching); free(nl->x_at_build);
     free(nl->cell_start); free(nl->cell_of); free(nl->cell_order);
@@ -25,7 +25,7 @@ void dem_neighbour_free(neighbour_list *nl)
 /* Wrap periodic coordinates into the box; stop if a particle left a closed side. */
 static void wrap_and_check_domain(dem_system *s)
 {
-    particles *p = &s->p;
+    dem_particles *p = &s->p;
     for (int i = 0; i < p->n; i++) {
         for (int d = 0; d < 3; d++) {
             double *xd = &p->x[i][d];
@@ -44,7 +44,7 @@ static void wrap_and_check_domain(dem_system *s)
     }
 }
 
-static int cell_coord(const neighbour_list *nl, double x, int d)
+static int cell_coord(const dem_neighbour_list *nl, double x, int d)
 {
     int c = (int)floor((x - nl->origin[d]) / nl->cell_size[d]);
     if (c < 0) c = 0;
@@ -65,8 +65,8 @@ static double list_cutoff(const dem_system *s)
  * within the cutoff of the box, and cells are no smaller than the cutoff). */
 static void bin_particles(dem_system *s, int count, double cutoff)
 {
-    neighbour_list *nl = &s->nlist;
-    const particles *p = &s->p;
+    dem_neighbour_list *nl = &s->nlist;
+    const dem_particles *p = &s->p;
     /* Cells no smaller than the cutoff, and not many more cells than particles (a sparse
      * system in a large domain would otherwise spend its time on empty cells). */
     const long max_cells = 4L * count + 64;
@@ -114,7 +114,7 @@ static void sort_by_cell(dem_system *s)
     free(order);
 }
 
-static void push_pair(neighbour_list *nl, int j)
+static void push_pair(dem_neighbour_list *nl, int j)
 {
     if (nl->npairs == nl->capacity) {
         nl->capacity = nl->capacity ? 2 * nl->capacity : 4096;
@@ -125,8 +125,8 @@ static void push_pair(neighbour_list *nl, int j)
 
 void dem_neighbour_rebuild(dem_system *s)
 {
-    neighbour_list *nl = &s->nlist;
-    particles *p = &s->p;
+    dem_neighbour_list *nl = &s->nlist;
+    dem_particles *p = &s->p;
     wrap_and_check_domain(s);
     const double cutoff = list_cutoff(s);
     for (int d = 0; d < 3; d++)
@@ -194,8 +194,8 @@ void dem_neighbour_rebuild(dem_system *s)
 
     if (p->n > nl->build_capacity) {
         nl->build_capacity = p->n;
-        nl->x_at_build = dem_realloc(nl->x_at_build, (size_t)p->n * sizeof(vec3));
+        nl->x_at_build = dem_realloc(nl->x_at_build, (size_t)p->n * sizeof(dem_vec3));
     }
-    memcpy(nl->x_at_build, p->x, (size_t)p->n * sizeof(vec3));
+    memcpy(nl->x_at_build, p->x, (size_t)p->n * sizeof(dem_vec3));
     nl->builds++;
 }

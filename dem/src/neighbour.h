@@ -9,7 +9,7 @@
 
 #include "particles.h"
 
-typedef struct neighbour_list {
+typedef struct dem_neighbour_list {
     double skin;                 /* [m] */
     double reach;                /* the normal model's reach beyond touching (JKR), added to the skin [m] */
     int sort_interval;           /* rebuilds between sorts, 0 = never */
@@ -23,7 +23,7 @@ typedef struct neighbour_list {
     long npairs, capacity, history_capacity;
     int rows_capacity;
     int rows;                    /* particles the list was built for */
-    vec3 *x_at_build;            /* positions at the last build */
+    dem_vec3 *x_at_build;            /* positions at the last build */
     int build_capacity;
     long builds, sorts;
     /* cells */
@@ -31,11 +31,11 @@ typedef struct neighbour_list {
     double cell_size[3], origin[3];
     int *cell_start, *cell_of, *cell_order;
     long cell_capacity;
-} neighbour_list;
+} dem_neighbour_list;
 
 struct dem_system;
-void dem_neighbour_init(neighbour_list *nl, double skin, int sort_interval, int history_size);
-void dem_neighbour_free(neighbour_list *nl);
+void dem_neighbour_init(dem_neighbour_list *nl, double skin, int sort_interval, int history_size);
+void dem_neighbour_free(dem_neighbour_list *nl);
 /* Rebuild: wrap the particles into the box, sort them by cell when due, make the periodic
  * images, build the list; every pair's history starts at zero. */
 void dem_neighbour_rebuild(struct dem_system *s);

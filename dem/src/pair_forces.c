@@ -20,10 +20,10 @@
 static ALWAYS_INLINE void pair_loop(dem_system *s, const int normal, const int tangential, const int cohesion,
                                     const int rolling, const int surface)
 {
-    particles *p = &s->p;
-    neighbour_list *nl = &s->nlist;
-    const vec3 *restrict x = p->x, *restrict v = p->v, *restrict w = p->omega;
-    vec3 *restrict f = p->f, *restrict t = p->torque;
+    dem_particles *p = &s->p;
+    dem_neighbour_list *nl = &s->nlist;
+    const dem_vec3 *restrict x = p->x, *restrict v = p->v, *restrict w = p->omega;
+    dem_vec3 *restrict f = p->f, *restrict t = p->torque;
     const double *restrict rad = p->radius, *restrict mass = p->mass;
     const int *restrict type = p->type;
     const int64_t *restrict id = p->id;
@@ -35,9 +35,9 @@ static ALWAYS_INLINE void pair_loop(dem_system *s, const int normal, const int t
                    surface_history_size(surface);
     const int needs_radius = contact_needs_radius(normal, cohesion, surface);
     const double reach = normal_has_reach(normal) ? s->contact_reach : 0.0;
-    const contact_models models_copy = s->models;   /* a local copy: no store in the loop can alias it */
-    const contact_models *models = &models_copy;
-    const material_table *mt = &s->materials;
+    const dem_contact_models models_copy = s->models;   /* a local copy: no store in the loop can alias it */
+    const dem_contact_models *models = &models_copy;
+    const dem_material_table *mt = &s->materials;
     double max_overlap = 0.0;
     int touching[CHUNK];
     double sep[CHUNK][4];   /* separation vector and its square, kept for the force pass */
@@ -47,7 +47,7 @@ static ALWAYS_INLINE void pair_loop(dem_system *s, const int normal, const int t
     for (int i = 0; i < nl->rows; i++) {
         const double xi = x[i][0], yi = x[i][1], zi = x[i][2], ri = rad[i], mi = mass[i];
         double fi[3] = {0.0, 0.0, 0.0}, ti[3] = {0.0, 0.0, 0.0};
-        const pair_coeffs *row = &mt->pair[type[i] * DEM_MAX_TYPES];
+        const dem_pair_coeffs *row = &mt->pair[type[i] * DEM_MAX_TYPES];
         for (int k0 = start[i]; k0 < start[i + 1]; k0 += CHUNK) {
             const int k1 = k0 + CHUNK < start[i + 1] ? k0 + CHUNK : start[i + 1];
             int nc = 0;
@@ -72,8 +72,8 @@ static ALWAYS_INLINE void pair_loop(dem_system *s, const int normal, const int t
                 const int kk = touching[mm], j = partner[kk];
                 const double *d = sep[mm], rsq = sep[mm][3];
                 const double rj = rad[j], mj = mass[j], radsum = ri + rj;
-                const pair_coeffs *c = &row[type[j]];
-                contact k;   /* the fields the models need are set below */
+                const dem_pair_coeffs *c = &row[type[j]];
+                dem_contact k;   /* the fields the models need are set below */
                 k.dt = dt;
                 k.step = step;
                 /* one division serves 1/r, R* and m* (divisions dominate this loop's cost) */
@@ -128,7 +128,7 @@ SPECIALISED_KERNELS(PAIR_KERNEL)
 
 static void pair_generic(dem_system *s)
 {
-    const contact_models *m = &s->models;
+    const dem_contact_models *m = &s->models;
     pair_loop(s, m->normal, m->tangential, m->cohesion, m->rolling, m->surface);
 }
 

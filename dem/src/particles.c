@@ -6,17 +6,17 @@
 #include "particles.h"
 
 #define PF_DESCRIPTOR(member, element, unit, dataset, flags)                                     \
-    {#member, dataset, unit, offsetof(particles, member), sizeof(PF_CTYPE_##element),            \
+    {#member, dataset, unit, offsetof(dem_particles, member), sizeof(PF_CTYPE_##element),            \
      PF_COMPONENTS_##element, PF_SCALAR_##element, flags},
-const particle_field dem_particle_fields[PARTICLE_FIELD_COUNT] = {PARTICLE_FIELDS(PF_DESCRIPTOR)};
+const dem_particle_field dem_particle_fields[PARTICLE_FIELD_COUNT] = {PARTICLE_FIELDS(PF_DESCRIPTOR)};
 #undef PF_DESCRIPTOR
 
-void dem_particles_init(particles *p)
+void dem_particles_init(dem_particles *p)
 {
     memset(p, 0, sizeof *p);
 }
 
-void dem_particles_free(particles *p)
+void dem_particles_free(dem_particles *p)
 {
 #define PF_FREE(member, element, unit, dataset, flags) free(p->member);
     PARTICLE_FIELDS(PF_FREE)
@@ -24,7 +24,7 @@ void dem_particles_free(particles *p)
     dem_particles_init(p);
 }
 
-void dem_particles_reserve(particles *p, int capacity)
+void dem_particles_reserve(dem_particles *p, int capacity)
 {
     if (capacity <= p->capacity) return;
 #define PF_GROW(member, element, unit, dataset, flags)                                           \
@@ -34,7 +34,7 @@ void dem_particles_reserve(particles *p, int capacity)
     p->capacity = capacity;
 }
 
-void dem_particles_set_mass(particles *p, int i, double density)
+void dem_particles_set_mass(dem_particles *p, int i, double density)
 {
     const double r = p->radius[i];
     const double m = density * 4.0 / 3.0 * M_PI * r * r * r;
@@ -44,7 +44,7 @@ void dem_particles_set_mass(particles *p, int i, double density)
 }
 
 /* A new particle at index n (grown if needed), all fields 0. */
-static int append_zeroed(particles *p)
+static int append_zeroed(dem_particles *p)
 {
     if (p->n == p->capacity) dem_particles_reserve(p, p->capacity ? 2 * p->capacity : 1024);
     const int i = p->n++;
@@ -54,7 +54,7 @@ static int append_zeroed(particles *p)
     return i;
 }
 
-int dem_particles_add(particles *p, const double x[3], const double v[3], double radius,
+int dem_particles_add(dem_particles *p, const double x[3], const double v[3], double radius,
                   double density, int type, int64_t id)
 {
     const int i = append_zeroed(p);
@@ -71,7 +71,7 @@ int dem_particles_add(particles *p, const double x[3], const double v[3], double
 
 /* Each field gathered through `order` into scratch and copied back; the element size is a
  * constant in each expansion, so the copies compile to moves. */
-void dem_particles_permute(particles *p, const int *order)
+void dem_particles_permute(dem_particles *p, const int *order)
 {
     const int n = p->n;
     size_t largest = 1;
@@ -89,7 +89,7 @@ void dem_particles_permute(particles *p, const int *order)
     free(scratch);
 }
 
-void dem_particles_copy(particles *p, int from, int to)
+void dem_particles_copy(dem_particles *p, int from, int to)
 {
     if (from == to) return;
 #define PF_COPY(member, element, unit, dataset, flags)                                           \
@@ -106,11 +106,11 @@ size_t dem_particles_pack_size(void)
     return bytes;
 }
 
-size_t dem_particles_pack(const particles *p, int i, void *buf)
+size_t dem_particles_pack(const dem_particles *p, int i, void *buf)
 {
     char *out = buf;
     for (int k = 0; k < PARTICLE_FIELD_COUNT; k++) {
-        const particle_field *f = &dem_particle_fields[k];
+        const dem_particle_field *f = &dem_particle_fields[k];
         if (!(f->flags & PF_MIGRATE)) continue;
         memcpy(out, (const char *)particle_field_data(p, f) + (size_t)i * f->element_size, f->element_size);
         out += f->element_size;
@@ -118,12 +118,12 @@ size_t dem_particles_pack(const particles *p, int i, void *buf)
     return (size_t)(out - (char *)buf);
 }
 
-int dem_particles_unpack(particles *p, const void *buf)
+int dem_particles_unpack(dem_particles *p, const void *buf)
 {
     const int i = append_zeroed(p);
     const char *in = buf;
     for (int k = 0; k < PARTICLE_FIELD_COUNT; k++) {
-        const particle_field *f = &dem_particle_fields[k];
+        const dem_particle_field *f = &dem_particle_fields[k];
         if (!(f->flags & PF_MIGRATE)) continue;
         memcpy((char *)particle_field_data(p, f) + (size_t)i * f->element_size, in, f->element_size);
         in += f->element_size;

@@ -11,7 +11,7 @@
 #include <stdint.h>
 #include <string.h>
 
-typedef double vec3[3];
+typedef double dem_vec3[3];
 
 /* What happens to a field besides living in memory:
  *   PF_WRITE    in every HDF5 snapshot and in the XDMF index (ParaView shows it)
@@ -36,14 +36,14 @@ enum { PF_WRITE = 1, PF_RESTART = 2, PF_MIGRATE = 4 };
  *     only where the search for the particle's cell starts (0 is as good a start as any), and
  *     a cell number of one rank's mesh means nothing on another: it does not migrate. */
 #define PARTICLE_FIELDS(X)                                                                      \
-    X(x,           vec3,   "m",        "position",        PF_WRITE | PF_RESTART | PF_MIGRATE)    \
-    X(v,           vec3,   "m/s",      "velocity",        PF_WRITE | PF_RESTART | PF_MIGRATE)    \
-    X(omega,       vec3,   "rad/s",    "omega",           PF_WRITE | PF_RESTART | PF_MIGRATE)    \
+    X(x,           dem_vec3,   "m",        "position",        PF_WRITE | PF_RESTART | PF_MIGRATE)    \
+    X(v,           dem_vec3,   "m/s",      "velocity",        PF_WRITE | PF_RESTART | PF_MIGRATE)    \
+    X(omega,       dem_vec3,   "rad/s",    "omega",           PF_WRITE | PF_RESTART | PF_MIGRATE)    \
     /* total force and torque of this step */                                                  \
-    X(f,           vec3,   "N",        "force",           PF_WRITE | PF_RESTART | PF_MIGRATE)    \
-    X(torque,      vec3,   "N m",      "torque",          PF_RESTART | PF_MIGRATE)               \
+    X(f,           dem_vec3,   "N",        "force",           PF_WRITE | PF_RESTART | PF_MIGRATE)    \
+    X(torque,      dem_vec3,   "N m",      "torque",          PF_RESTART | PF_MIGRATE)               \
     /* external force held between exchanges (the fluid force in a coupled run) */             \
-    X(f_ext,       vec3,   "N",        "external_force",  PF_MIGRATE)                            \
+    X(f_ext,       dem_vec3,   "N",        "external_force",  PF_MIGRATE)                            \
     X(radius,      double, "m",        "radius",          PF_WRITE | PF_RESTART | PF_MIGRATE)    \
     X(mass,        double, "kg",       "mass",            PF_MIGRATE)                            \
     X(inv_mass,    double, "1/kg",     "inverse_mass",    PF_MIGRATE)                            \
@@ -58,35 +58,35 @@ enum { PF_WRITE = 1, PF_RESTART = 2, PF_MIGRATE = 4 };
     /* coupling: the fluid force is beta (u_fluid - v) + f_fluid, beta and u_fluid frozen at    \
      * the exchange (beta 0 when explicit), f_fluid the part that does not depend on v */      \
     X(beta,        double, "kg/s",     "drag_coefficient", PF_MIGRATE)                           \
-    X(u_fluid,     vec3,   "m/s",      "fluid_velocity",  PF_MIGRATE)                            \
-    X(f_fluid,     vec3,   "N",        "fluid_force_fixed", PF_MIGRATE)
+    X(u_fluid,     dem_vec3,   "m/s",      "fluid_velocity",  PF_MIGRATE)                            \
+    X(f_fluid,     dem_vec3,   "N",        "fluid_force_fixed", PF_MIGRATE)
 
 /* The element types the list may use: C type, components, scalar kind. */
-#define PF_CTYPE_vec3 vec3
+#define PF_CTYPE_dem_vec3 dem_vec3
 #define PF_CTYPE_double double
 #define PF_CTYPE_int int
 #define PF_CTYPE_int64 int64_t
-#define PF_COMPONENTS_vec3 3
+#define PF_COMPONENTS_dem_vec3 3
 #define PF_COMPONENTS_double 1
 #define PF_COMPONENTS_int 1
 #define PF_COMPONENTS_int64 1
-#define PF_SCALAR_vec3 PF_DOUBLE
+#define PF_SCALAR_dem_vec3 PF_DOUBLE
 #define PF_SCALAR_double PF_DOUBLE
 #define PF_SCALAR_int PF_INT
 #define PF_SCALAR_int64 PF_INT64
 
-enum particle_scalar { PF_DOUBLE, PF_INT, PF_INT64 };
+enum dem_particle_scalar { PF_DOUBLE, PF_INT, PF_INT64 };
 
-typedef struct particles {
+typedef struct dem_particles {
     int n;                 /* particles in use */
     int capacity;
 #define PF_MEMBER(member, element, unit, dataset, flags) PF_CTYPE_##element *member;
     PARTICLE_FIELDS(PF_MEMBER)
 #undef PF_MEMBER
-} particles;
+} dem_particles;
 
 /* Index of each field in dem_particle_fields[]: PF_FIELD_x, PF_FIELD_v, ... */
-enum particle_field_index {
+enum dem_particle_field_index {
 #define PF_INDEX(member, element, unit, dataset, flags) PF_FIELD_##member,
     PARTICLE_FIELDS(PF_INDEX)
 #undef PF_INDEX
@@ -94,46 +94,46 @@ enum particle_field_index {
 };
 
 /* One field, for code that treats them all alike (I/O, packing). */
-typedef struct particle_field {
+typedef struct dem_particle_field {
     const char *member;          /* the C name */
     const char *dataset;         /* name in the snapshot and the XDMF index */
     const char *unit;
     size_t offset;               /* offsetof(particles, member): where the array pointer is */
     size_t element_size;         /* bytes per particle */
     int components;
-    enum particle_scalar scalar; /* double, int or int64: gives the HDF5 type */
+    enum dem_particle_scalar scalar; /* double, int or int64: gives the HDF5 type */
     unsigned flags;              /* PF_WRITE, PF_RESTART, PF_MIGRATE */
-} particle_field;
+} dem_particle_field;
 
-extern const particle_field dem_particle_fields[PARTICLE_FIELD_COUNT];
+extern const dem_particle_field dem_particle_fields[PARTICLE_FIELD_COUNT];
 
 /* The array of field f in p (the member at f->offset). Read as bytes: the member is a typed
  * pointer, and reading it through a void * lvalue would break the aliasing rules. */
-static inline void *particle_field_data(const particles *p, const particle_field *f)
+static inline void *particle_field_data(const dem_particles *p, const dem_particle_field *f)
 {
     void *data;
     memcpy(&data, (const char *)p + f->offset, sizeof data);
     return data;
 }
 
-void dem_particles_init(particles *p);
-void dem_particles_free(particles *p);
-void dem_particles_reserve(particles *p, int capacity);
+void dem_particles_init(dem_particles *p);
+void dem_particles_free(dem_particles *p);
+void dem_particles_reserve(dem_particles *p, int capacity);
 /* Append one particle at rest, every other field 0; returns its index. density in kg/m^3. */
-int dem_particles_add(particles *p, const double x[3], const double v[3], double radius,
+int dem_particles_add(dem_particles *p, const double x[3], const double v[3], double radius,
                   double density, int type, int64_t id);
 /* Recompute mass, inverse mass and inverse inertia from radius and a per-type density. */
-void dem_particles_set_mass(particles *p, int i, double density);
+void dem_particles_set_mass(dem_particles *p, int i, double density);
 /* Reorder all arrays so that new index k holds old index order[k]. */
-void dem_particles_permute(particles *p, const int *order);
+void dem_particles_permute(dem_particles *p, const int *order);
 /* Every field of particle `from` copied onto particle `to` (both within the capacity; the
  * periodic images beyond n are made this way). */
-void dem_particles_copy(particles *p, int from, int to);
+void dem_particles_copy(dem_particles *p, int from, int to);
 /* Bytes of one particle's PF_MIGRATE fields, as dem_particles_pack writes them. */
 size_t dem_particles_pack_size(void);
 /* Particle i's PF_MIGRATE fields into buf (dem_particles_pack_size() bytes); returns the bytes. */
-size_t dem_particles_pack(const particles *p, int i, void *buf);
+size_t dem_particles_pack(const dem_particles *p, int i, void *buf);
 /* Append a particle from dem_particles_pack's bytes, its other fields 0; returns its index. */
-int dem_particles_unpack(particles *p, const void *buf);
+int dem_particles_unpack(dem_particles *p, const void *buf);
 
 #endif

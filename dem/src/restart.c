@@ -6,16 +6,16 @@
 #include "error.h"
 #include "restart.h"
 
-void dem_restart_save_contacts(const dem_system *s, contact_state *cs)
+void dem_restart_save_contacts(const dem_system *s, dem_contact_state *cs)
 {
-    contact_store store;
+    dem_contact_store store;
     dem_contact_store_init(&store, s->history_size, s->nlist.history_antisymmetric);
     dem_contacts_gather(s, &store);
     dem_contacts_to_state(&store, s->nwalls, cs);
     dem_contact_store_free(&store);
 }
 
-void dem_restart_setup(dem_system *s, const contact_state *cs)
+void dem_restart_setup(dem_system *s, const dem_contact_state *cs)
 {
     const int matches = cs && cs->history_size == dem_contact_history_size(&s->models) && cs->nwalls == s->nwalls;
     if (cs && cs->history_size > 0 && !matches)
@@ -25,7 +25,7 @@ void dem_restart_setup(dem_system *s, const contact_state *cs)
         dem_system_setup(s);
         return;
     }
-    contact_store saved;
+    dem_contact_store saved;
     dem_contact_store_init(&saved, cs->history_size, dem_contact_history_antisymmetric(&s->models));
     dem_contacts_from_state(cs, &saved);
     /* the snapshot's forces were computed in the step that wrote it (with the half-step
@@ -36,7 +36,7 @@ void dem_restart_setup(dem_system *s, const contact_state *cs)
     dem_contact_store_free(&saved);
 }
 
-int dem_restart_read(dem_system *s, const char *base, double at_time, double tolerance, contact_state *cs)
+int dem_restart_read(dem_system *s, const char *base, double at_time, double tolerance, dem_contact_state *cs)
 {
     long step;
     if (dem_io_read_snapshot_at(base, at_time, tolerance, &s->p, &s->time, &step, cs) != 0) return -1;

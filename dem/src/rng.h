@@ -6,7 +6,7 @@
 #include <math.h>
 #include <stdint.h>
 
-typedef struct rng { uint64_t s[4]; } rng;
+typedef struct dem_rng { uint64_t s[4]; } dem_rng;
 
 static inline uint64_t rng_splitmix64(uint64_t *x)
 {
@@ -16,12 +16,12 @@ static inline uint64_t rng_splitmix64(uint64_t *x)
     return z ^ (z >> 31);
 }
 
-static inline void rng_seed(rng *r, uint64_t seed)
+static inline void rng_seed(dem_rng *r, uint64_t seed)
 {
     for (int k = 0; k < 4; k++) r->s[k] = rng_splitmix64(&seed);
 }
 
-static inline uint64_t rng_next(rng *r)
+static inline uint64_t rng_next(dem_rng *r)
 {
     uint64_t *s = r->s;
     const uint64_t x = s[1] * 5;
@@ -34,10 +34,10 @@ static inline uint64_t rng_next(rng *r)
 }
 
 /* Uniform in [0, 1). */
-static inline double rng_uniform(rng *r) { return (double)(rng_next(r) >> 11) * 0x1.0p-53; }
+static inline double rng_uniform(dem_rng *r) { return (double)(rng_next(r) >> 11) * 0x1.0p-53; }
 
 /* Standard normal (Box-Muller). */
-static inline double rng_normal(rng *r)
+static inline double rng_normal(dem_rng *r)
 {
     double u = rng_uniform(r);
     while (u <= 0.0) u = rng_uniform(r);

@@ -4,7 +4,7 @@
 
 #include "symmetry.h"
 
-void dem_symmetry_bounce(const symmetry_plane *planes, int nplanes, double x[3], double v[3], const double f[3],
+void dem_symmetry_bounce(const dem_symmetry_plane *planes, int nplanes, double x[3], double v[3], const double f[3],
                      double inv_mass, double dt)
 {
     const double h = 0.5 * dt;

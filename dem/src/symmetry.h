@@ -34,26 +34,26 @@
 
 #define DEM_MAX_SYMMETRY_PLANES 8
 
-typedef struct symmetry_plane {
+typedef struct dem_symmetry_plane {
     char name[96];
     double point[3];
     double normal[3];        /* unit normal pointing into the particle side */
     double offset;           /* point . normal, so that d = x . normal - offset */
-} symmetry_plane;
+} dem_symmetry_plane;
 
 /* Signed distance of a point from the plane [m] (negative: beyond it). */
-static inline double symmetry_distance(const symmetry_plane *sp, const double x[3])
+static inline double symmetry_distance(const dem_symmetry_plane *sp, const double x[3])
 {
     return x[0] * sp->normal[0] + x[1] * sp->normal[1] + x[2] * sp->normal[2] - sp->offset;
 }
 
 /* The bounce of one particle that crossed a plane (symmetry.c); x, v after the drift, f the
  * force of the step's first half kick. */
-void dem_symmetry_bounce(const symmetry_plane *planes, int nplanes, double x[3], double v[3], const double f[3],
+void dem_symmetry_bounce(const dem_symmetry_plane *planes, int nplanes, double x[3], double v[3], const double f[3],
                      double inv_mass, double dt);
 
 /* After the drift of one particle: mirror it if its centre crossed a plane. */
-static inline void symmetry_apply(const symmetry_plane *planes, int nplanes, double x[3], double v[3],
+static inline void symmetry_apply(const dem_symmetry_plane *planes, int nplanes, double x[3], double v[3],
                                   const double f[3], double inv_mass, double dt)
 {
     for (int k = 0; k < nplanes; k++)

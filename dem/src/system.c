@@ -38,14 +38,14 @@ static void rebuild(dem_system *s)
  * (the largest over the material pairs at the largest particle, pair and wall). */
 static void prepare_models(dem_system *s)
 {
-    material_table *t = &s->materials;
+    dem_material_table *t = &s->materials;
     for (int slot = 0; slot < SLOT_COUNT; slot++) {
-        const contact_model *d = system_model(s, slot);
+        const dem_contact_model *d = system_model(s, slot);
         if (d->prepare)
             for (int a = 0; a < t->ntypes; a++)
                 for (int b = 0; b < t->ntypes; b++) d->prepare(t->pair[a * DEM_MAX_TYPES + b].model[slot]);
     }
-    const contact_model *normal = system_model(s, SLOT_NORMAL);
+    const dem_contact_model *normal = system_model(s, SLOT_NORMAL);
     s->contact_reach = 0.0;
     if (normal->reach) {
         double rmax = 0.0;
@@ -58,7 +58,7 @@ static void prepare_models(dem_system *s)
     s->nlist.reach = s->contact_reach;
 }
 
-long dem_system_setup_with_contacts(dem_system *s, const contact_store *saved, int compute_forces)
+long dem_system_setup_with_contacts(dem_system *s, const dem_contact_store *saved, int compute_forces)
 {
     s->history_size = dem_contact_history_size(&s->models);
     s->nlist.history_size = s->history_size;
@@ -98,7 +98,7 @@ static void add_contact_forces(dem_system *s)
 
 void dem_system_compute_forces(dem_system *s)
 {
-    particles *p = &s->p;
+    dem_particles *p = &s->p;
     for (int i = 0; i < p->n; i++) {
         for (int d = 0; d < 3; d++) {
             p->f[i][d] = p->mass[i] * s->gravity[d] + p->f_ext[i][d];
@@ -108,7 +108,7 @@ void dem_system_compute_forces(dem_system *s)
     add_contact_forces(s);
 }
 
-static void half_kick(particles *p, double dt)
+static void half_kick(dem_particles *p, double dt)
 {
     const double h = 0.5 * dt;
     for (int i = 0; i < p->n; i++) {
@@ -129,11 +129,11 @@ static void half_kick(particles *p, double dt)
  * planes runs the vectorised one. */
 static int kick_drift_reset(dem_system *s)
 {
-    particles *p = &s->p;
+    dem_particles *p = &s->p;
     const double dt = s->dt, h = 0.5 * dt, g[3] = {s->gravity[0], s->gravity[1], s->gravity[2]};
-    const vec3 *restrict x0 = s->nlist.x_at_build;
-    vec3 *restrict x = p->x, *restrict v = p->v, *restrict w = p->omega, *restrict f = p->f, *restrict t = p->torque;
-    const vec3 *restrict f_ext = p->f_ext;
+    const dem_vec3 *restrict x0 = s->nlist.x_at_build;
+    dem_vec3 *restrict x = p->x, *restrict v = p->v, *restrict w = p->omega, *restrict f = p->f, *restrict t = p->torque;
+    const dem_vec3 *restrict f_ext = p->f_ext;
     const double *restrict inv_mass = p->inv_mass, *restrict inv_inertia = p->inv_inertia, *restrict mass = p->mass;
     const double limit = 0.25 * s->nlist.skin * s->nlist.skin;
     const int listed = p->n < s->nlist.rows ? p->n : s->nlist.rows;   /* added since: rebuild */
@@ -150,7 +150,7 @@ static int kick_drift_reset(dem_system *s)
             }
         }
     } else {
-        const symmetry_plane *planes = s->symmetry_planes;
+        const dem_symmetry_plane *planes = s->symmetry_planes;
         const int nplanes = s->nsymmetry;
         for (int i = 0; i < p->n; i++) {
             for (int d = 0; d < 3; d++) {
@@ -174,7 +174,7 @@ static int kick_drift_reset(dem_system *s)
 
 void dem_system_step(dem_system *s)
 {
-    particles *p = &s->p;
+    dem_particles *p = &s->p;
     if (kick_drift_reset(s)) rebuild(s);
     add_contact_forces(s);
     half_kick(p, s->dt);
@@ -185,7 +185,7 @@ void dem_system_step(dem_system *s)
 
 void dem_system_check_health(const dem_system *s)
 {
-    const particles *p = &s->p;
+    const dem_particles *p = &s->p;
     for (int i = 0; i < p->n; i++) {
         const double *x = p->x[i], *v = p->v[i], *w = p->omega[i];
         if (!(isfinite(x[0]) && isfinite(x[1]) && isfinite(x[2]) && isfinite(v[0]) && isfinite(v[1]) &&
@@ -204,7 +204,7 @@ void dem_system_check_health(const dem_system *s)
 
 double dem_system_kinetic_energy(const dem_system *s)
 {
-    const particles *p = &s->p;
+    const dem_particles *p = &s->p;
     double e = 0.0;
     for (int i = 0; i < p->n; i++) {
         const double *v = p->v[i], *w = p->omega[i];

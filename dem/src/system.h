@@ -12,9 +12,9 @@
 #include "walls.h"
 
 typedef struct dem_system {
-    particles p;
-    material_table materials;
-    contact_models models;
+    dem_particles p;
+    dem_material_table materials;
+    dem_contact_models models;
     int history_size;                 /* doubles per contact, from the models */
     double contact_reach;             /* largest gap at which the normal model still acts [m] (JKR) */
     int generic_kernels;              /* 1: the generic force kernels even where a specialised one exists (tests) */
@@ -25,14 +25,14 @@ typedef struct dem_system {
     double inv_period[3];             /* 1/period, 0 in non-periodic directions */
 
     int nwalls, wall_capacity;
-    wall *walls;                      /* dem_walls_add() appends */
-    wall_contacts *wall_lists;        /* per wall: the particles near it and their contact history */
+    dem_wall *walls;                      /* dem_walls_add() appends */
+    dem_wall_contacts *wall_lists;        /* per wall: the particles near it and their contact history */
     int nsymmetry;                    /* symmetry planes: mirrors without force (symmetry.h) */
-    symmetry_plane symmetry_planes[DEM_MAX_SYMMETRY_PLANES];
+    dem_symmetry_plane symmetry_planes[DEM_MAX_SYMMETRY_PLANES];
 
-    neighbour_list nlist;
-    ghost_list ghosts;                /* periodic images, stored after the particles (ghosts.h) */
-    contact_store carried;            /* the contacts' history across a rebuild (contacts.h) */
+    dem_neighbour_list nlist;
+    dem_ghost_list ghosts;                /* periodic images, stored after the particles (ghosts.h) */
+    dem_contact_store carried;            /* the contacts' history across a rebuild (contacts.h) */
 
     double gravity[3];                /* [m/s^2] */
     double dt;                        /* [s] */
@@ -52,7 +52,7 @@ void dem_system_setup(dem_system *s);
 /* The same, with the contact history of a store (contacts.h) put back onto the new lists, and
  * the first forces only if compute_forces (a restart keeps its snapshot's); returns how many
  * contacts were found. */
-long dem_system_setup_with_contacts(dem_system *s, const contact_store *saved, int compute_forces);
+long dem_system_setup_with_contacts(dem_system *s, const dem_contact_store *saved, int compute_forces);
 /* One velocity-Verlet step. */
 void dem_system_step(dem_system *s);
 /* Forces for the current positions (pairs, walls, gravity, external). */
@@ -65,7 +65,7 @@ double dem_system_kinetic_energy(const dem_system *s);
 /* Pair forces (pair_forces.c). */
 void dem_pair_forces_add(dem_system *s);
 /* The descriptor of the model chosen for a slot. */
-static inline const contact_model *system_model(const dem_system *s, enum contact_slot slot)
+static inline const dem_contact_model *system_model(const dem_system *s, enum dem_contact_slot slot)
 {
     return dem_contact_model_get(slot, contact_model_id(&s->models, slot));
 }

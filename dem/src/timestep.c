@@ -6,31 +6,31 @@
 #include "timestep.h"
 
 /* Rayleigh-wave time across a sphere: pi r sqrt(rho/G) / (0.1631 nu + 0.8766). */
-static double rayleigh_time(const material *m, double radius)
+static double rayleigh_time(const dem_material *m, double radius)
 {
     const double shear_modulus = m->youngs_modulus / (2.0 * (1.0 + m->poisson_ratio));
     return M_PI * radius * sqrt(m->density / shear_modulus) / (0.1631 * m->poisson_ratio + 0.8766);
 }
 
 /* Duration of an elastic impact at relative speed v, from the normal model (its header). */
-static double contact_time(const dem_system *s, const pair_coeffs *c, double r_eff, double m_eff, double v)
+static double contact_time(const dem_system *s, const dem_pair_coeffs *c, double r_eff, double m_eff, double v)
 {
     return system_model(s, SLOT_NORMAL)->contact_time(c, &s->models, r_eff, m_eff, v);
 }
 
-timestep_limits dem_timestep_limits_compute(const dem_system *s, double max_velocity)
+dem_timestep_limits dem_timestep_limits_compute(const dem_system *s, double max_velocity)
 {
-    const particles *p = &s->p;
+    const dem_particles *p = &s->p;
     const int nt = s->materials.ntypes;
     double rmin[DEM_MAX_TYPES];
     for (int t = 0; t < nt; t++) rmin[t] = INFINITY;
     for (int i = 0; i < p->n; i++) rmin[p->type[i]] = fmin(rmin[p->type[i]], p->radius[i]);
 
-    timestep_limits lim = {INFINITY, INFINITY, INFINITY, "-", "-"};
+    dem_timestep_limits lim = {INFINITY, INFINITY, INFINITY, "-", "-"};
     static char pair_name[2 * DEM_NAME_LEN + 16];
     for (int a = 0; a < nt; a++) {
         if (!isfinite(rmin[a])) continue;
-        const material *ma = &s->materials.mat[a];
+        const dem_material *ma = &s->materials.mat[a];
         const double tr = rayleigh_time(ma, rmin[a]);
         if (tr < lim.rayleigh_time) { lim.rayleigh_time = tr; lim.rayleigh_material = ma->name; }
         const double m_a = ma->density * 4.0 / 3.0 * M_PI * pow(rmin[a], 3);
@@ -63,7 +63,7 @@ timestep_limits dem_timestep_limits_compute(const dem_system *s, double max_velo
 void dem_timestep_check(const dem_system *s, double max_velocity, int override, const char *source)
 {
     if (s->p.n == 0) return;
-    const timestep_limits lim = dem_timestep_limits_compute(s, max_velocity);
+    const dem_timestep_limits lim = dem_timestep_limits_compute(s, max_velocity);
     const double fr = s->dt / lim.rayleigh_time, fc = s->dt / lim.contact_time;
     dem_info("time step %g s: %.3f of the Rayleigh time %.3g s (%s; limit %.2f), "
              "%.3f of the %s contact time %.3g s at %g m/s (%s; limit %.2f)",

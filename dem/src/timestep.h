@@ -9,14 +9,14 @@
 #define CONTACT_FRACTION 0.1
 
 struct dem_system;
-typedef struct timestep_limits {
+typedef struct dem_timestep_limits {
     double rayleigh_time;     /* [s] smallest over the particles present */
     double contact_time;      /* [s] smallest over type pairs and walls */
     double largest_safe_dt;   /* [s] */
     const char *rayleigh_material, *contact_pair;
-} timestep_limits;
+} dem_timestep_limits;
 
-timestep_limits dem_timestep_limits_compute(const struct dem_system *s, double max_velocity);
+dem_timestep_limits dem_timestep_limits_compute(const struct dem_system *s, double max_velocity);
 /* Print the fractions; stop with the largest safe step if dt is too large (unless override,
  * which prints a loud warning instead). source names the file for the message. */
 void dem_timestep_check(const struct dem_system *s, double max_velocity, int override, const char *source);

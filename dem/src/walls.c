@@ -8,7 +8,7 @@
 #include "error.h"
 #include "system.h"
 
-int dem_wall_gap(const wall *w, const double x[3], double radius, double *gap, double en[3])
+int dem_wall_gap(const dem_wall *w, const double x[3], double radius, double *gap, double en[3])
 {
     if (w->kind == WALL_PLANE) {
         const double dist = (x[0] - w->point[0]) * w->normal[0] + (x[1] - w->point[1]) * w->normal[1] +
@@ -42,7 +42,7 @@ int dem_wall_gap(const wall *w, const double x[3], double radius, double *gap, d
     return 1;
 }
 
-wall *dem_walls_add(dem_system *s)
+dem_wall *dem_walls_add(dem_system *s)
 {
     if (s->nwalls == s->wall_capacity) {
         s->wall_capacity = s->wall_capacity ? 2 * s->wall_capacity : 8;
@@ -71,14 +71,14 @@ void dem_walls_free(dem_system *s)
 /* Refresh the candidate lists (called after each neighbour-list build): real particles only. */
 void dem_walls_build_candidates(dem_system *s)
 {
-    const particles *p = &s->p;
+    const dem_particles *p = &s->p;
     const int hs = s->history_size;
     const double range = s->nlist.skin + s->contact_reach;
     for (int k = 0; k < s->nwalls; k++) {
-        wall_contacts *wc = &s->wall_lists[k];
+        dem_wall_contacts *wc = &s->wall_lists[k];
         /* bounded walls: test with the bounds widened by the range, cheaply, by testing the
          * position itself and letting the force loop decide the exact bounds */
-        wall probe = s->walls[k];
+        dem_wall probe = s->walls[k];
         if (probe.bounded)
             for (int d = 0; d < 3; d++) {
                 probe.bounds_min[d] -= range;
@@ -112,7 +112,7 @@ void dem_walls_build_candidates(dem_system *s)
 static ALWAYS_INLINE void wall_loop(dem_system *s, const int normal, const int tangential, const int cohesion,
                                     const int rolling, const int surface)
 {
-    particles *p = &s->p;
+    dem_particles *p = &s->p;
     const int hs = s->history_size;
     const int needs_radius = contact_needs_radius(normal, cohesion, surface);
     const double reach = normal_has_reach(normal) ? s->contact_reach : 0.0;
@@ -121,12 +121,12 @@ static ALWAYS_INLINE void wall_loop(dem_system *s, const int normal, const int t
     double max_overlap = 0.0;
     double fw[3] = {0.0, 0.0, 0.0};   /* the walls' total force on the particles */
     for (int q = 0; q < s->nwalls; q++) {
-        const wall *wl = &s->walls[q];
-        wall_contacts *wc = &s->wall_lists[q];
+        const dem_wall *wl = &s->walls[q];
+        dem_wall_contacts *wc = &s->wall_lists[q];
         for (int m = 0; m < wc->n; m++) {
             const int i = wc->particle[m];
             double *h = wc->history + (size_t)m * hs;
-            contact k = {.dt = dt, .step = step};
+            dem_contact k = {.dt = dt, .step = step};
             double gap;
             if (!dem_wall_gap(wl, p->x[i], p->radius[i], &gap, k.en) || gap >= reach) {
                 for (int c = 0; c < hs; c++) h[c] = 0.0;
@@ -134,7 +134,7 @@ static ALWAYS_INLINE void wall_loop(dem_system *s, const int normal, const int t
                 continue;
             }
             const double ri = p->radius[i];
-            const pair_coeffs *c = materials_pair(&s->materials, p->type[i], wl->material);
+            const dem_pair_coeffs *c = materials_pair(&s->materials, p->type[i], wl->material);
             k.delta = -gap;
             k.r_eff = ri;
             k.m_eff = p->mass[i];
@@ -181,7 +181,7 @@ SPECIALISED_KERNELS(WALL_KERNEL)
 
 static void wall_generic(dem_system *s)
 {
-    const contact_models *m = &s->models;
+    const dem_contact_models *m = &s->models;
     wall_loop(s, m->normal, m->tangential, m->cohesion, m->rolling, m->surface);
 }
 

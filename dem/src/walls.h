@@ -5,11 +5,11 @@
 #ifndef DEM_WALLS_H
 #define DEM_WALLS_H
 
-enum wall_kind { WALL_PLANE, WALL_CYLINDER };
+enum dem_wall_kind { WALL_PLANE, WALL_CYLINDER };
 
-typedef struct wall {
+typedef struct dem_wall {
     char name[96];
-    enum wall_kind kind;
+    enum dem_wall_kind kind;
     int material;
     /* plane */
     double point[3], normal[3];            /* unit normal pointing into the particle side */
@@ -21,20 +21,20 @@ typedef struct wall {
     double radius;
     int inside;                            /* particles inside (1) or outside (0) */
     double axial_min, axial_max;           /* extent along the axis */
-} wall;
+} dem_wall;
 
 /* The particles within radius + skin (+ the normal model's reach) of one wall, refreshed at each
  * neighbour-list build, each with its contact history beside it. */
-typedef struct wall_contacts {
+typedef struct dem_wall_contacts {
     int n, capacity;
     int *particle;               /* particle indices */
     double *history;             /* history_size doubles per candidate */
     unsigned char *touching;     /* in contact at the last force computation */
-} wall_contacts;
+} dem_wall_contacts;
 
 struct dem_system;
 /* Append a wall (its fields zeroed) to the system; there is no limit on their number. */
-wall *dem_walls_add(struct dem_system *s);
+dem_wall *dem_walls_add(struct dem_system *s);
 void dem_walls_free(struct dem_system *s);
 /* Add wall forces to p->f / p->torque (kernel chosen once per model combination). */
 void dem_walls_add_forces(struct dem_system *s);
@@ -43,6 +43,6 @@ void dem_walls_add_forces(struct dem_system *s);
 void dem_walls_build_candidates(struct dem_system *s);
 /* Signed gap from a sphere surface to the wall (negative: overlap) and the unit normal from the
  * wall to the centre; returns 0 if the wall does not act at this position (outside bounds). */
-int dem_wall_gap(const wall *w, const double x[3], double radius, double *gap, double en[3]);
+int dem_wall_gap(const dem_wall *w, const double x[3], double radius, double *gap, double en[3]);
 
 #endif

@@ -47,7 +47,7 @@ typedef struct scene {
 
 static void make_scene(scene *s, double rho_f)
 {
-    rng r;
+    dem_rng r;
     rng_seed(&r, 20100825);
     for (int c = 0; c < NCELLS; c++) {
         s->cell_volume[c] = 1e-6 * (0.5 + 1.5 * rng_uniform(&r));   /* [m^3] */

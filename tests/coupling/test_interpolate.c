@@ -33,7 +33,7 @@ static void linear_exact(const char *name, const cpl_mesh *m, int npts, unsigned
     for (int c = 0; c < m->ncells; c++) linear(m->cell_centre[c], u + 3 * c);
     cpl_interp_set_field(&lin, m, u);
     cpl_interp_set_field(&cel, m, u);
-    rng g;
+    dem_rng g;
     rng_seed(&g, seed);
     double worst = 0, worst_cell = 0;
     int found = 0, guess = -1;
@@ -77,7 +77,7 @@ static void smooth_error(int n, double *err_linear, double *err_cell)
     for (int c = 0; c < m.ncells; c++) u[c] = smooth(m.cell_centre[c]);
     cpl_interp_set_field(&lin, &m, u);
     cpl_interp_set_field(&cel, &m, u);
-    rng g;
+    dem_rng g;
     rng_seed(&g, 7);
     *err_linear = *err_cell = 0;
     const int npts = 20000;

@@ -57,7 +57,7 @@ static double total_volume(const cpl_mesh *m)
  * outside points and the walks that needed a full search. */
 static int locate_agrees(const cpl_mesh *m, int npts, unsigned seed, int *outside, int *searches_short)
 {
-    rng r;
+    dem_rng r;
     rng_seed(&r, seed);
     int bad = 0;
     *outside = 0;

@@ -30,7 +30,7 @@ static double mapped_volume(const cpl_voidfraction *vf, const cpl_mesh *m, int *
 }
 
 /* np random particles, centres inside the mesh (rejection against locate), radii in [rmin, rmax) */
-static int random_particles(const cpl_mesh *m, rng *g, int np, double rmin, double rmax, double (*x)[3], double *r,
+static int random_particles(const cpl_mesh *m, dem_rng *g, int np, double rmin, double rmax, double (*x)[3], double *r,
                             int *cell)
 {
     for (int i = 0; i < np; i++) {
@@ -50,7 +50,7 @@ static void conservation(const char *mesh_name, const cpl_mesh *m, int np, doubl
 {
     double (*x)[3] = malloc(np * sizeof *x), *r = malloc(np * sizeof(double));
     int *cell = malloc(np * sizeof(int));
-    rng g;
+    dem_rng g;
     rng_seed(&g, seed);
     random_particles(m, &g, np, rmin, rmax, x, r, cell);
     double total = 0;

@@ -47,7 +47,7 @@ static void read_schema(const char *path)
     double v[3], *list;
     int b3[3];
 
-    dict *d = dem_dict_read(path);
+    dem_dict *d = dem_dict_read(path);
     dem_dict_scalar(d, "timeStep", 1e-12, 1);
     dem_dict_scalar_opt(d, "endTime", 0, 0, HUGE_VAL);
     dem_dict_scalar_opt(d, "writeInterval", 0, 0, HUGE_VAL);
@@ -60,20 +60,20 @@ static void read_schema(const char *path)
     dem_dict_scalar_opt(d, "progressInterval", 5, 0, HUGE_VAL);
     if (dem_dict_has(d, "probePoints")) free((dem_dict_vector_list(d, "probePoints", &list), list));
 
-    dict *dom = dem_dict_sub_opt(d, "domain");
+    dem_dict *dom = dem_dict_sub_opt(d, "domain");
     if (dom) {
         dem_dict_vector(dom, "min", v);
         dem_dict_vector(dom, "max", v);
         dem_dict_bools3_opt(dom, "periodic", b3, 0);
     }
-    dict *mat = dem_dict_sub_opt(d, "materials");
+    dem_dict *mat = dem_dict_sub_opt(d, "materials");
     for (int i = 0; mat && i < dem_dict_size(mat); i++) {
-        dict *m = dem_dict_dict_at(mat, i);
+        dem_dict *m = dem_dict_dict_at(mat, i);
         dem_dict_scalar(m, "youngsModulus", 1, 1e15);
         dem_dict_scalar(m, "poissonsRatio", 0, 0.5);
         dem_dict_scalar(m, "density", 1, 1e5);
     }
-    dict *cm = dem_dict_sub_opt(d, "contactModels");
+    dem_dict *cm = dem_dict_sub_opt(d, "contactModels");
     if (cm) {
         dem_dict_choice(cm, "normal", normal_opts);
         dem_dict_choice_opt(cm, "tangential", tangential_opts, 1);
@@ -82,15 +82,15 @@ static void read_schema(const char *path)
         dem_dict_choice_opt(cm, "surface", surface_opts, 0);
         dem_dict_scalar_opt(cm, "characteristicVelocity", 1, 0, HUGE_VAL);
     }
-    dict *ia = dem_dict_sub_opt(d, "interactions");
+    dem_dict *ia = dem_dict_sub_opt(d, "interactions");
     for (int i = 0; ia && i < dem_dict_size(ia); i++) {
-        dict *p = dem_dict_dict_at(ia, i);
+        dem_dict *p = dem_dict_dict_at(ia, i);
         dem_dict_scalar(p, "restitution", 0, 1);
         dem_dict_scalar(p, "friction", 0, 10);
     }
-    dict *walls = dem_dict_sub_opt(d, "walls");
+    dem_dict *walls = dem_dict_sub_opt(d, "walls");
     for (int i = 0; walls && i < dem_dict_size(walls); i++) {
-        dict *w = dem_dict_dict_at(walls, i);
+        dem_dict *w = dem_dict_dict_at(walls, i);
         int type = dem_dict_choice(w, "type", wall_types);
         dem_dict_word(w, "material");
         if (type == 0) {
@@ -111,10 +111,10 @@ static void read_schema(const char *path)
             dem_dict_scalar_opt(w, "zMax", 0, -HUGE_VAL, HUGE_VAL);
         }
     }
-    dict *ins = dem_dict_sub_opt(d, "insertion");
+    dem_dict *ins = dem_dict_sub_opt(d, "insertion");
     for (int i = 0; ins && i < dem_dict_size(ins); i++) {
-        dict *f = dem_dict_dict_at(ins, i);
-        dict *r = dem_dict_sub(f, "region");
+        dem_dict *f = dem_dict_dict_at(ins, i);
+        dem_dict *r = dem_dict_sub(f, "region");
         if (dem_dict_choice(r, "type", regions) == 0) {
             dem_dict_vector(r, "min", v);
             dem_dict_vector(r, "max", v);
@@ -125,7 +125,7 @@ static void read_schema(const char *path)
             dem_dict_scalar(f, "solidFraction", 0, 1);
         dem_dict_word(f, "material");
         dem_dict_vector_opt(f, "velocity", v, zero);
-        dict *dia = dem_dict_sub(f, "diameter");
+        dem_dict *dia = dem_dict_sub(f, "diameter");
         int dist = dem_dict_choice(dia, "distribution", dists);
         if (dist == 0) dem_dict_scalar(dia, "value", 0, 1);
         if (dist == 3) {
@@ -193,7 +193,7 @@ static void test_values(void)
 {
     char path[512];
     snprintf(path, sizeof path, "%s/demProperties", tmpdir);
-    dict *d = dem_dict_read(path);
+    dem_dict *d = dem_dict_read(path);
     const double zero[3] = { 0, 0, 0 }, one[3] = { 1, 1, 1 };
     double v[3], *list;
     int b[3];
@@ -279,7 +279,7 @@ static void test_values(void)
     CHECK(dem_dict_key_line(d, "included") == 2);
     CHECK(dem_dict_label(d, "fromMore", 0, 10) == 1);
     {
-        dict *s = dem_dict_sub(d, "incDict");
+        dem_dict *s = dem_dict_sub(d, "incDict");
         char want[512];
         snprintf(want, sizeof want, "%s/inc/extra", tmpdir);
         CHECK(strcmp(dem_dict_path(s), want) == 0);
@@ -288,7 +288,7 @@ static void test_values(void)
 
     /* nested dictionaries */
     CHECK(dem_dict_has(d, "FoamFile"));   /* kept, but marked used */
-    dict *sub = dem_dict_sub(d, "sub");
+    dem_dict *sub = dem_dict_sub(d, "sub");
     CHECK(strcmp(dem_dict_name(sub), "sub") == 0);
     CHECK(dem_dict_line(sub) == 28);
     CHECK(dem_dict_size(sub) == 2);
@@ -299,7 +299,7 @@ static void test_values(void)
     CHECK(dem_dict_sub_opt(d, "absentSub") == NULL);
     CHECK(dem_dict_sub_opt(d, "sub") == sub);
 
-    dict *mat = dem_dict_sub(d, "materials");
+    dem_dict *mat = dem_dict_sub(d, "materials");
     CHECK(dem_dict_size(mat) == 2);
     CHECK(strcmp(dem_dict_key_at(mat, 0), "glass") == 0);
     CHECK(strcmp(dem_dict_key_at(mat, 1), "steel") == 0);

@@ -39,7 +39,7 @@ enum { MAX_ELEMENT = 64 };
  * with bit patterns that a float round trip or a conversion would lose. */
 static void expected(int k, int seed, unsigned char out[MAX_ELEMENT])
 {
-    const particle_field *f = &dem_particle_fields[k];
+    const dem_particle_field *f = &dem_particle_fields[k];
     for (int c = 0; c < f->components; c++) {
         if (f->scalar == PF_DOUBLE) {
             const double v = (k + 1) / 3.0 + sin(0.7 * seed + c) * 1e-3 + seed * 1e-7;
@@ -54,19 +54,19 @@ static void expected(int k, int seed, unsigned char out[MAX_ELEMENT])
     }
 }
 
-static unsigned char *element(const particles *p, int k, int i)
+static unsigned char *element(const dem_particles *p, int k, int i)
 {
     return (unsigned char *)particle_field_data(p, &dem_particle_fields[k]) + (size_t)i * dem_particle_fields[k].element_size;
 }
 
-static void fill(particles *p, int k, int i, int seed)
+static void fill(dem_particles *p, int k, int i, int seed)
 {
     unsigned char e[MAX_ELEMENT];
     expected(k, seed, e);
     memcpy(element(p, k, i), e, dem_particle_fields[k].element_size);
 }
 
-static void fill_all(particles *p, int n)
+static void fill_all(dem_particles *p, int n)
 {
     dem_particles_reserve(p, n);
     p->n = n;
@@ -74,14 +74,14 @@ static void fill_all(particles *p, int n)
         for (int i = 0; i < n; i++) fill(p, k, i, i);
 }
 
-static int holds(const particles *p, int k, int i, int seed)
+static int holds(const dem_particles *p, int k, int i, int seed)
 {
     unsigned char e[MAX_ELEMENT];
     expected(k, seed, e);
     return memcmp(element(p, k, i), e, dem_particle_fields[k].element_size) == 0;
 }
 
-static int is_zero(const particles *p, int k, int i)
+static int is_zero(const dem_particles *p, int k, int i)
 {
     const unsigned char *b = element(p, k, i);
     for (size_t q = 0; q < dem_particle_fields[k].element_size; q++)
@@ -93,14 +93,14 @@ static int is_zero(const particles *p, int k, int i)
  *    the dataset names of the first file format. */
 static void check_table(void)
 {
-    const size_t arrays = (sizeof(particles) - offsetof(particles, x)) / sizeof(void *);
+    const size_t arrays = (sizeof(dem_particles) - offsetof(dem_particles, x)) / sizeof(void *);
     CHECK(PARTICLE_FIELD_COUNT == (int)arrays, "the table has %d fields, the struct %zu arrays",
           PARTICLE_FIELD_COUNT, arrays);
     int seen[64] = {0};
     for (int k = 0; k < PARTICLE_FIELD_COUNT; k++) {
-        const particle_field *f = &dem_particle_fields[k];
-        const size_t slot = (f->offset - offsetof(particles, x)) / sizeof(void *);
-        CHECK(f->offset >= offsetof(particles, x) && slot < 64 && !seen[slot]++, "%s: offset %zu", f->member,
+        const dem_particle_field *f = &dem_particle_fields[k];
+        const size_t slot = (f->offset - offsetof(dem_particles, x)) / sizeof(void *);
+        CHECK(f->offset >= offsetof(dem_particles, x) && slot < 64 && !seen[slot]++, "%s: offset %zu", f->member,
               f->offset);
         const size_t scalar = f->scalar == PF_DOUBLE ? sizeof(double) : f->scalar == PF_INT ? sizeof(int) : sizeof(int64_t);
         CHECK(f->components >= 1 && f->element_size == scalar * (size_t)f->components && f->element_size <= MAX_ELEMENT,
@@ -118,7 +118,7 @@ static void check_table(void)
         {PF_FIELD_torque, "torque", PF_RESTART}, {PF_FIELD_radius, "radius", PF_WRITE | PF_RESTART},
         {PF_FIELD_id, "id", PF_WRITE | PF_RESTART}, {PF_FIELD_type, "type", PF_WRITE | PF_RESTART}};
     for (size_t q = 0; q < sizeof kept / sizeof kept[0]; q++) {
-        const particle_field *f = &dem_particle_fields[kept[q].field];
+        const dem_particle_field *f = &dem_particle_fields[kept[q].field];
         CHECK(strcmp(f->dataset, kept[q].dataset) == 0 && (f->flags & kept[q].flags) == kept[q].flags,
               "%s: dataset '%s' flags %u, expected '%s' with %u", f->member, f->dataset, f->flags,
               kept[q].dataset, kept[q].flags);
@@ -128,7 +128,7 @@ static void check_table(void)
 /* 2. Allocation: every field has room for the capacity, and growing keeps the contents. */
 static void check_allocation(void)
 {
-    particles p;
+    dem_particles p;
     dem_particles_init(&p);
     fill_all(&p, 1000);
     for (int k = 0; k < PARTICLE_FIELD_COUNT; k++)
@@ -150,7 +150,7 @@ static void check_allocation(void)
  *    memory is dirtied first). */
 static void check_add(void)
 {
-    particles p;
+    dem_particles p;
     dem_particles_init(&p);
     fill_all(&p, 8);
     p.n = 5;
@@ -171,7 +171,7 @@ static void check_add(void)
         CHECK(holds(&p, k, 4, 4), "dem_particles_add: %s of particle 4 changed", dem_particle_fields[k].member);
     }
     /* growing from full */
-    particles q;
+    dem_particles q;
     dem_particles_init(&q);
     for (int j = 0; j < 1500; j++) dem_particles_add(&q, x, v, r, rho, 0, j);
     CHECK(q.n == 1500 && q.id[0] == 0 && q.id[1499] == 1499, "1500 adds: n %d", q.n);
@@ -183,7 +183,7 @@ static void check_add(void)
 static void check_permute(void)
 {
     enum { N = 257 };
-    particles p;
+    dem_particles p;
     dem_particles_init(&p);
     fill_all(&p, N);
     int order[N];
@@ -209,7 +209,7 @@ static void check_permute(void)
  *    fields travel, the others arrive as 0. */
 static void check_copy_and_pack(void)
 {
-    particles p, q;
+    dem_particles p, q;
     dem_particles_init(&p);
     dem_particles_init(&q);
     fill_all(&p, 20);
@@ -240,7 +240,7 @@ static void check_copy_and_pack(void)
 
 /* Raw contents of dataset `name` of /snapshots/000000 in the field's memory type; NULL if absent.
  * *units gets its units attribute (malloc'd, or NULL). */
-static void *read_raw(const char *h5, const particle_field *f, int n, char **units, int *shape_ok)
+static void *read_raw(const char *h5, const dem_particle_field *f, int n, char **units, int *shape_ok)
 {
     *units = NULL;
     *shape_ok = 0;
@@ -308,16 +308,16 @@ static void check_snapshot(const char *dir)
     snprintf(base, sizeof base, "%s/particles", dir);
     snprintf(h5, sizeof h5, "%s.h5", base);
     snprintf(xdmf, sizeof xdmf, "%s.xdmf", base);
-    particles p, r;
+    dem_particles p, r;
     dem_particles_init(&p);
     dem_particles_init(&r);
     fill_all(&p, N);
-    particle_writer *w = dem_io_open_writer(base, 0);
+    dem_particle_writer *w = dem_io_open_writer(base, 0);
     dem_io_write_snapshot(w, &p, 0.25, 9);
     dem_io_close_writer(w);
 
     for (int k = 0; k < PARTICLE_FIELD_COUNT; k++) {
-        const particle_field *f = &dem_particle_fields[k];
+        const dem_particle_field *f = &dem_particle_fields[k];
         char *units;
         int shape_ok;
         void *raw = read_raw(h5, f, N, &units, &shape_ok);
@@ -337,7 +337,7 @@ static void check_snapshot(const char *dir)
     char *x = slurp(xdmf);
     CHECK(x != NULL, "no %s", xdmf);
     for (int k = 0; x && k < PARTICLE_FIELD_COUNT; k++) {
-        const particle_field *f = &dem_particle_fields[k];
+        const dem_particle_field *f = &dem_particle_fields[k];
         char item[256], attr[256];
         snprintf(item, sizeof item, "particles.h5:/snapshots/000000/%s<", f->dataset);
         snprintf(attr, sizeof attr, "<Attribute Name=\"%s\" AttributeType=\"%s\"", f->dataset,
@@ -350,14 +350,14 @@ static void check_snapshot(const char *dir)
     free(x);
 
     fill_all(&r, 40);   /* garbage that the reader must overwrite or clear */
-    contact_state cs;
+    dem_contact_state cs;
     double t;
     long step;
     CHECK(dem_io_read_snapshot_at(base, NAN, 0.0, &r, &t, &step, &cs) == 0 && r.n == N && t == 0.25 && step == 9,
           "restart read: n %d t %g step %ld", r.n, t, step);
     CHECK(cs.forces_read == 1, "restart read: the forces were not kept");
     for (int k = 0; r.n == N && k < PARTICLE_FIELD_COUNT; k++) {
-        const particle_field *f = &dem_particle_fields[k];
+        const dem_particle_field *f = &dem_particle_fields[k];
         int bad = 0;
         for (int i = 0; i < N; i++) bad += (f->flags & PF_RESTART) ? !holds(&r, k, i, i) : !is_zero(&r, k, i);
         CHECK(!bad, "restart read: %s wrong at %d of %d particles (%s)", f->member, bad, N,

@@ -111,7 +111,7 @@ static void logger_gets_the_lines(const char *dir)
     divert_output(out);
     dem_system s;
     dem_system_init(&s);
-    run_settings rs;
+    dem_run_settings rs;
     dem_case_read(dir, &s, &rs, 0);
     dem_timestep_check(&s, dem_case_default_max_velocity(&s), rs.timestep_override, rs.timestep_source);
     static char long_name[3001];
@@ -150,7 +150,7 @@ static void handler_gets_the_error(const char *dir)
     if (setjmp(caught_jump) == 0) {
         dem_system s;
         dem_system_init(&s);
-        run_settings rs;
+        dem_run_settings rs;
         dem_case_read(dir, &s, &rs, 0);
     } else {
         stopped = 1;

@@ -31,7 +31,7 @@ static int checks = 0, failures = 0;
     } while (0)
 
 /* Known, non-round values for snapshot k (bit patterns that a float round trip would lose). */
-static void fill(particles *p, int n, int k)
+static void fill(dem_particles *p, int n, int k)
 {
     dem_particles_reserve(p, n);
     p->n = n;
@@ -52,9 +52,9 @@ static void fill(particles *p, int n, int k)
 }
 
 /* Compare what the reader gave back with snapshot k of size n, field by field, exactly. */
-static void compare(const particles *r, int n, int k, const char *what)
+static void compare(const dem_particles *r, int n, int k, const char *what)
 {
-    particles e;
+    dem_particles e;
     dem_particles_init(&e);
     fill(&e, n, k);
     CHECK(r->n == n, "%s: n = %d, expected %d", what, r->n, n);
@@ -169,7 +169,7 @@ static int read_in_child(const char *base)
     pid_t pid = fork();
     if (pid == 0) {
         freopen("/dev/null", "w", stderr);
-        particles p;
+        dem_particles p;
         dem_particles_init(&p);
         double t;
         long s;
@@ -199,14 +199,14 @@ int main(int argc, char **argv)
     const double times[] = {0.0, 1.25e-3, 2.5e-3, 3.75e-3, 5.0e-3};
     const long steps[] = {0, 100, 200, 300, 400};
 
-    particles p, r;
+    dem_particles p, r;
     dem_particles_init(&p);
     dem_particles_init(&r);
     double t;
     long s;
 
     /* 1. Three snapshots, read the last one back. */
-    particle_writer *w = dem_io_open_writer(base, 0);
+    dem_particle_writer *w = dem_io_open_writer(base, 0);
     for (int k = 0; k < 3; k++) {
         fill(&p, sizes[k], k);
         dem_io_write_snapshot(w, &p, times[k], steps[k]);
@@ -245,8 +245,8 @@ int main(int argc, char **argv)
     fflush(NULL);
     pid_t pid = fork();
     if (pid == 0) {
-        particle_writer *cw = dem_io_open_writer(base, 1);
-        particles q;
+        dem_particle_writer *cw = dem_io_open_writer(base, 1);
+        dem_particles q;
         dem_particles_init(&q);
         fill(&q, sizes[3], 3);
         dem_io_write_snapshot(cw, &q, times[3], steps[3]);

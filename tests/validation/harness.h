@@ -37,10 +37,10 @@ static inline int finish(const char *name)
 
 /* A system with one material (E, nu, rho), given e and mu, models, in a box [-L, L]^3. */
 static inline void make_system(dem_system *s, double E, double nu, double rho, double e, double mu,
-                        enum normal_model normal, enum tangential_model tangential, double L)
+                        enum dem_normal_model normal, enum dem_tangential_model tangential, double L)
 {
     dem_system_init(s);
-    material *m = &s->materials.mat[0];
+    dem_material *m = &s->materials.mat[0];
     snprintf(m->name, sizeof m->name, "test");
     m->youngs_modulus = E;
     m->poisson_ratio = nu;
@@ -64,7 +64,7 @@ static inline int add_sphere(dem_system *s, double x, double y, double z, double
 
 static inline void add_plane(dem_system *s, double px, double py, double pz, double nx, double ny, double nz)
 {
-    wall *w = dem_walls_add(s);
+    dem_wall *w = dem_walls_add(s);
     memset(w, 0, sizeof *w);
     snprintf(w->name, sizeof w->name, "plane%d", s->nwalls);
     w->kind = WALL_PLANE;

@@ -8,8 +8,8 @@
 typedef struct impact_spec {
     double E, nu, rho, r;                 /* material and radius */
     double e, mu;                         /* pair restitution and friction */
-    enum normal_model normal;
-    enum tangential_model tangential;
+    enum dem_normal_model normal;
+    enum dem_tangential_model tangential;
     double v_char;                        /* hooke */
     int wall;                             /* 0: two spheres; 1: sphere on plane z = 0 */
     double vn, vt;                        /* approach speed; tangential speed (x) */
@@ -40,7 +40,7 @@ static impact_result run_impact(const impact_spec *sp)
 {
     dem_system s;
     make_system(&s, sp->E, sp->nu, sp->rho, sp->e, sp->mu, sp->normal, sp->tangential, 1.0);
-    const hooke_case hc = {sp->v_char};
+    const dem_hooke_case hc = {sp->v_char};
     SET_MODEL_CASE(&s, SLOT_NORMAL, hc);
     s.models.fn_floor = sp->limit_force ? 0.0 : -INFINITY;
     s.dt = spec_contact_time(sp) / sp->steps_per_contact;

@@ -51,14 +51,14 @@ static double dmt_force(double delta, double R)
 }
 
 /* ---------------------------------------------------------------- systems */
-static void setup(dem_system *s, enum normal_model model, double e, int wall, double delta0)
+static void setup(dem_system *s, enum dem_normal_model model, double e, int wall, double delta0)
 {
     make_system(s, E, NU, RHO, e, 0.0, model, tangential_none, 0.05);
     if (model == normal_jkr) {
-        const jkr_params p = {W};
+        const dem_jkr_params p = {W};
         dem_materials_set_model_values(&s->materials, 0, 0, SLOT_NORMAL, &p, sizeof p);
     } else {
-        const dmt_params p = {W};
+        const dem_dmt_params p = {W};
         dem_materials_set_model_values(&s->materials, 0, 0, SLOT_NORMAL, &p, sizeof p);
     }
     s->nlist.skin = 0.5 * RAD;   /* far more than any motion here: the list is built once */
@@ -179,7 +179,7 @@ static void set_pull(dem_system *s, double P)
 
 /* Settle from a light touch, ramp the pull to P over 0.2 s, hold 0.1 s: bonded throughout
  * (overlap above -limit)? *delta_end: the overlap at the end. */
-static int pull(enum normal_model model, double P, double limit, double *delta_end)
+static int pull(enum dem_normal_model model, double P, double limit, double *delta_end)
 {
     dem_system s;
     setup(&s, model, 0.3, 0, 1e-7);

@@ -70,7 +70,7 @@ static double golden_max(double lo, double hi)
 static void pair_setup(dem_system *s, double delta_start)
 {
     make_system(s, E, NU, RHO, 0.3, 0.5, normal_hertz, tangential_history, 0.05);
-    const sjkr_params mp = {K_COH};
+    const dem_sjkr_params mp = {K_COH};
     dem_materials_set_model_values(&s->materials, 0, 0, SLOT_COHESION, &mp, sizeof mp);
     s->models.cohesion = cohesion_sjkr;
     add_sphere(s, -RI, 0, 0, 0, 0, 0, RI);                        /* id 0 */

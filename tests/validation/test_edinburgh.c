@@ -64,7 +64,7 @@ typedef struct ref_model {
     int wall;
 } ref_model;
 
-static ref_model ref_make(const edinburgh_params *mp, int wall)
+static ref_model ref_make(const dem_edinburgh_params *mp, int wall)
 {
     ref_model m;
     const double Y = E_MOD / (2.0 * (1.0 - NU * NU));
@@ -173,7 +173,7 @@ static void trace_push(trace *t, double d, double f)
     t->n++;
 }
 
-static void pair_system(dem_system *s, const edinburgh_params *mp)
+static void pair_system(dem_system *s, const dem_edinburgh_params *mp)
 {
     make_system(s, E_MOD, NU, RHO, 1.0, 0.0, normal_edinburgh, tangential_none, 0.01);
     dem_materials_set_model_values(&s->materials, 0, 0, SLOT_NORMAL, mp, sizeof *mp);
@@ -230,9 +230,9 @@ static void check_branch(const char *what, const ref_model *m, const trace *t, i
     check_rel(buf, t->f[worst], ref_force(m, t->d[worst], fmax(dmax, t->d[worst])), tol);
 }
 
-static edinburgh_params edin_params(double kappa, double gamma, double d, double c)
+static dem_edinburgh_params edin_params(double kappa, double gamma, double d, double c)
 {
-    edinburgh_params mp;
+    dem_edinburgh_params mp;
     memset(&mp, 0, sizeof mp);
     mp.kappa21 = kappa;
     mp.gamma_s = gamma;
@@ -246,7 +246,7 @@ static const int NLEG = 20000;
 static void trace_main(void)
 {
     const double d1 = 2e-6, gamma = 4.0;
-    const edinburgh_params mp = edin_params(5.0, gamma, 1.5, 1.0);
+    const dem_edinburgh_params mp = edin_params(5.0, gamma, 1.5, 1.0);
     const ref_model m = ref_make(&mp, 0);
     const double d2 = 1.5 * d1, dlow = 0.05 * d1, dp1 = m.lam * d1;
     const double fpeak = ref_load(&m, d1), floor = 1e-6 * fpeak;
@@ -329,7 +329,7 @@ static void trace_main(void)
 static void trace_limit(void)
 {
     const double d1 = 2e-6, gamma = 20.0;
-    const edinburgh_params mp = edin_params(1.5, gamma, 1.5, 1.0);
+    const dem_edinburgh_params mp = edin_params(1.5, gamma, 1.5, 1.0);
     const ref_model m = ref_make(&mp, 0);
     const double dp1 = m.lam * d1, fpeak = ref_load(&m, d1);
     const double lim = 0.5 * m.k2 * pow(dp1, m.d);
@@ -377,7 +377,7 @@ static void trace_limit(void)
 static void trace_hertz(void)
 {
     const double d1 = 1e-5;
-    const edinburgh_params mp = edin_params(1.0001, 0.0, 1.5, 1.0);
+    const dem_edinburgh_params mp = edin_params(1.0001, 0.0, 1.5, 1.0);
     const double Y = E_MOD / (2.0 * (1.0 - NU * NU)), kh = 4.0 / 3.0 * Y * sqrt(0.5 * RAD);
     dem_system s;
     pair_system(&s, &mp);
@@ -403,7 +403,7 @@ typedef struct impact_out {
 } impact_out;
 
 /* sphere on the plane z = 0 (wall) or two spheres head on, approach speed v; dt = t_scale / steps */
-static impact_out edin_impact(const edinburgh_params *mp, double e, int wall, double v, double t_scale, double steps)
+static impact_out edin_impact(const dem_edinburgh_params *mp, double e, int wall, double v, double t_scale, double steps)
 {
     dem_system s;
     make_system(&s, E_MOD, NU, RHO, e, 0.0, normal_edinburgh, tangential_none, 0.01);
@@ -455,7 +455,7 @@ static double hertz_time(double v)
 
 static void impact_hertz(void)
 {
-    const edinburgh_params mp = edin_params(1.0001, 0.0, 1.5, 1.0);
+    const dem_edinburgh_params mp = edin_params(1.0001, 0.0, 1.5, 1.0);
     const double v = 1.0;
     const impact_out o = edin_impact(&mp, 1.0, 1, v, hertz_time(v), 4000);
     printf("   wall impact at %g m/s: restitution %.6f, peak overlap %.6g m, contact time %.6g s\n",
@@ -467,7 +467,7 @@ static void impact_hertz(void)
 static void impact_damping(void)
 {
     printf("\n5. eq. 8 damping: d_ex=1, kappa21=1.0001, gamma_s=0\n");
-    const edinburgh_params mp = edin_params(1.0001, 0.0, 1.0, 1.0);
+    const dem_edinburgh_params mp = edin_params(1.0001, 0.0, 1.0, 1.0);
     const double es[] = {0.2, 0.5, 0.9};
     const double Y = E_MOD / (2.0 * (1.0 - NU * NU));
     for (int wall = 1; wall >= 0; wall--)
@@ -488,7 +488,7 @@ static void impact_speed(void)
     const double speeds[] = {0.01, 0.02, 0.05, 0.1, 0.2, 0.5, 1.0, 2.0, 3.0};
     enum { NS = sizeof speeds / sizeof speeds[0], NG = 2 };
     const double gammas[NG] = {1.0, 3.0};
-    const edinburgh_params mp_pl = edin_params(5.0, 0.0, 1.5, 1.0);
+    const dem_edinburgh_params mp_pl = edin_params(5.0, 0.0, 1.5, 1.0);
     const ref_model mpl = ref_make(&mp_pl, 1);
     const double l = mpl.lam, dd = mpl.d, m = sphere_mass();
     const double e_pl = sqrt(mpl.kappa * ((1 - pow(l, dd + 1)) - (dd + 1) * pow(l, dd) * (1 - l)));
@@ -504,7 +504,7 @@ static void impact_speed(void)
         const double v = speeds[k];
         e_plv[k] = edin_impact(&mp_pl, 1.0, 1, v, hertz_time(v), 4000).restitution;
         for (int g = 0; g < NG; g++) {
-            const edinburgh_params mp = edin_params(5.0, gammas[g], 1.5, 1.0);
+            const dem_edinburgh_params mp = edin_params(5.0, gammas[g], 1.5, 1.0);
             const ref_model mr = ref_make(&mp, 1);
             const impact_out o = edin_impact(&mp, 1.0, 1, v, hertz_time(v), 4000);
             /* closed form: delta_m from loading work = kinetic energy; rebound energy = work

@@ -9,7 +9,7 @@
 
 static double elastic_energy(const dem_system *s)
 {
-    const particles *p = &s->p;
+    const dem_particles *p = &s->p;
     double u = 0.0;
     for (int i = 0; i < p->n; i++) {
         for (int j = i + 1; j < p->n; j++) {
@@ -40,7 +40,7 @@ int main(void)
     add_plane(&s, 0, L, 0, 0, -1, 0);
     add_plane(&s, -L, 0, 0, 1, 0, 0);
     add_plane(&s, L, 0, 0, -1, 0, 0);
-    rng r;
+    dem_rng r;
     rng_seed(&r, 7);
     /* 300 spheres, radii 0.8-1.2 mm, on a loose lattice, random velocities up to vmax */
     int placed = 0;

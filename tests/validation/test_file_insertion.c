@@ -32,14 +32,14 @@ static void read_case(dem_system *s, const char *dir, const char *entry)
     char text[4096];
     snprintf(text, sizeof text, head, entry);
     write_text(dir, "constant/demProperties", text);
-    run_settings rs;
+    dem_run_settings rs;
     dem_system_init(s);
     dem_case_read(dir, s, &rs, 0);
 }
 
 static void make_truth(truth *t)
 {
-    rng r;
+    dem_rng r;
     rng_seed(&r, 3);
     int k = 0;
     for (int c = 0; c < 8; c++)   /* spacing 0.005 m, jitter 0.4 mm, d <= 3 mm: no overlaps */

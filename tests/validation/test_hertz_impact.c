@@ -12,7 +12,7 @@ typedef struct impact_result { double delta_max, f_max, t_contact, restitution; 
 
 /* Head-on impact at relative speed v; wall != 0: one sphere on a plane. dt = t_c / steps. */
 static impact_result impact(double E, double nu, double rho, double r, double v, double e, int wall,
-                            enum normal_model normal, double dt)
+                            enum dem_normal_model normal, double dt)
 {
     dem_system s;
     make_system(&s, E, nu, rho, e, 0.0, normal, tangential_none, 0.1);

@@ -16,9 +16,9 @@ static dem_system fresh(void)
     return s;
 }
 
-static insertion box_region(double half)
+static dem_insertion box_region(double half)
 {
-    insertion ins;
+    dem_insertion ins;
     memset(&ins, 0, sizeof ins);
     snprintf(ins.name, sizeof ins.name, "test");
     for (int d = 0; d < 3; d++) { ins.min[d] = -half; ins.max[d] = half; }
@@ -35,9 +35,9 @@ static void stats(const dem_system *s, double *mean, double *std)
     *std = sqrt(b / s->p.n - *mean * *mean);
 }
 
-static int overlaps_or_outside(const dem_system *s, const insertion *ins)
+static int overlaps_or_outside(const dem_system *s, const dem_insertion *ins)
 {
-    const particles *p = &s->p;
+    const dem_particles *p = &s->p;
     for (int i = 0; i < p->n; i++) {
         for (int d = 0; d < 3; d++) {
             if (ins->region == REGION_BOX && (p->x[i][d] - p->radius[i] < ins->min[d] || p->x[i][d] + p->radius[i] > ins->max[d])) return 1;
@@ -62,7 +62,7 @@ int main(void)
     char what[128];
     { /* constant, box, by number */
         dem_system s = fresh();
-        insertion ins = box_region(0.1);
+        dem_insertion ins = box_region(0.1);
         ins.number = N; ins.dist = SIZE_CONSTANT; ins.d_value = 2e-3;
         check_true("constant: the requested number inserted", dem_insertion_run(&s, &ins) == N && s.p.n == N);
         int equal = 1;
@@ -73,7 +73,7 @@ int main(void)
     }
     { /* uniform */
         dem_system s = fresh();
-        insertion ins = box_region(0.1);
+        dem_insertion ins = box_region(0.1);
         const double a = 1e-3, b = 3e-3;
         ins.number = N; ins.dist = SIZE_UNIFORM; ins.d_min = a; ins.d_max = b;
         dem_insertion_run(&s, &ins);
@@ -89,7 +89,7 @@ int main(void)
     }
     { /* normal truncated at +-1.5 sigma, in a cylinder */
         dem_system s = fresh();
-        insertion ins = box_region(0.1);
+        dem_insertion ins = box_region(0.1);
         ins.region = REGION_CYLINDER; ins.axis = 2; ins.radius = 0.08; ins.centre[0] = 0.01;
         const double mu = 2e-3, sigma = 0.4e-3, z = 1.5;
         ins.number = N; ins.dist = SIZE_NORMAL; ins.d_mean = mu; ins.d_std = sigma;
@@ -107,7 +107,7 @@ int main(void)
     }
     { /* discrete, by solid fraction */
         dem_system s = fresh();
-        insertion ins = box_region(0.05);
+        dem_insertion ins = box_region(0.05);
         double values[2] = {1e-3, 3e-3}, weights[2] = {0.7, 0.3};
         ins.solid_fraction = 0.15; ins.dist = SIZE_DISCRETE; ins.ndiscrete = 2;
         ins.d_values = values; ins.d_weights = weights;

@@ -26,18 +26,18 @@ typedef struct state { double x[2][3], v[2][3], w[2][3]; int n; } state;
 
 static void set_all_params(dem_system *s)
 {
-    const hooke_case hooke = {1.0};
-    const edinburgh_params edinburgh = {3.0, 0.05, 1.5, 1.5, 0.0, 0.0};
-    const jkr_params jkr = {0.02};
-    const dmt_params dmt = {0.02};
-    const sjkr_params sjkr = {2e4};
-    const cdt_params cdt = {0.1};
-    const epsd_params epsd = {0.1, 0.3};
-    const cdt_jkr_params cdt_jkr = {0.02, 2.0};
-    const cdt_jkr_case cdt_jkr_c = {1.0};
-    const roughness_case rough = {SCATTER_NORMAL, 0.2, 0.5, 7};
-    material_table *t = &s->materials;
-    const contact_models *m = &s->models;
+    const dem_hooke_case hooke = {1.0};
+    const dem_edinburgh_params edinburgh = {3.0, 0.05, 1.5, 1.5, 0.0, 0.0};
+    const dem_jkr_params jkr = {0.02};
+    const dem_dmt_params dmt = {0.02};
+    const dem_sjkr_params sjkr = {2e4};
+    const dem_cdt_params cdt = {0.1};
+    const dem_epsd_params epsd = {0.1, 0.3};
+    const dem_cdt_jkr_params cdt_jkr = {0.02, 2.0};
+    const dem_cdt_jkr_case cdt_jkr_c = {1.0};
+    const dem_roughness_case rough = {SCATTER_NORMAL, 0.2, 0.5, 7};
+    dem_material_table *t = &s->materials;
+    const dem_contact_models *m = &s->models;
     if (m->normal == normal_hooke) SET_MODEL_CASE(s, SLOT_NORMAL, hooke);
     if (m->normal == normal_edinburgh) dem_materials_set_model_values(t, 0, 0, SLOT_NORMAL, &edinburgh, sizeof edinburgh);
     if (m->normal == normal_jkr) dem_materials_set_model_values(t, 0, 0, SLOT_NORMAL, &jkr, sizeof jkr);
@@ -156,10 +156,10 @@ int main(void)
                                  dem_contact_model_get(1, ids[1])->name, dem_contact_model_get(2, ids[2])->name,
                                  dem_contact_model_get(3, ids[3])->name, dem_contact_model_get(4, ids[4])->name);
                         /* history layout: all antisymmetric parts lead */
-                        contact_models m = {.normal = ids[0], .tangential = ids[1], .cohesion = ids[2], .rolling = ids[3], .surface = ids[4]};
+                        dem_contact_models m = {.normal = ids[0], .tangential = ids[1], .cohesion = ids[2], .rolling = ids[3], .surface = ids[4]};
                         int anti = 0;
                         for (int slot = 0; slot < SLOT_COUNT; slot++) {
-                            const contact_model *d = dem_contact_model_get(slot, ids[slot]);
+                            const dem_contact_model *d = dem_contact_model_get(slot, ids[slot]);
                             if (d->history_antisymmetric != 0 && d->history_antisymmetric != d->history) bad_layout++;
                             anti += d->history_antisymmetric;
                         }

@@ -33,7 +33,7 @@ static void read_case(dem_system *s, const char *gravity, const char *entry, con
     scratch_case("test_lattice", dir, sizeof dir);
     snprintf(text, sizeof text, head, gravity, entry, diameter);
     write_text(dir, "constant/demProperties", text);
-    run_settings rs;
+    dem_run_settings rs;
     dem_system_init(s);
     dem_case_read(dir, s, &rs, 0);
     remove_case(dir);
@@ -76,7 +76,7 @@ static void openfoam_file(const dem_system *lattice)
     snprintf(text, sizeof text, head, "(0 0 -9.81)", entry, d25);
     write_text(dir, "constant/demProperties", text);
     dem_system s;
-    run_settings rs;
+    dem_run_settings rs;
     dem_system_init(&s);
     dem_case_read(dir, &s, &rs, 0);
     remove_case(dir);

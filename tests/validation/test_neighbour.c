@@ -15,8 +15,8 @@ static int real_of(const dem_system *s, int j)
 
 static int count_missing(const dem_system *s, int *duplicates)
 {
-    const particles *p = &s->p;
-    const neighbour_list *nl = &s->nlist;
+    const dem_particles *p = &s->p;
+    const dem_neighbour_list *nl = &s->nlist;
     int missing = 0;
     *duplicates = 0;
     for (int i = 0; i < p->n; i++)
@@ -49,7 +49,7 @@ static void gas(int periodic)
         add_plane(&s, 0, -L, 0, 0, 1, 0); add_plane(&s, 0, L, 0, 0, -1, 0);
         add_plane(&s, -L, 0, 0, 1, 0, 0); add_plane(&s, L, 0, 0, -1, 0, 0);
     }
-    rng r;
+    dem_rng r;
     rng_seed(&r, 11);
     for (int a = 0; a < 8; a++)
         for (int b = 0; b < 8; b++)

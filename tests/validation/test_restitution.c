@@ -9,7 +9,7 @@
 
 #include "impact.h"
 
-static impact_spec spec(double E, double nu, double rho, double r, double e, enum normal_model normal,
+static impact_spec spec(double E, double nu, double rho, double r, double e, enum dem_normal_model normal,
                         int wall, double v)
 {
     impact_spec sp = {E, nu, rho, r, e, 0.0, normal, tangential_none, 1.0, wall, v, 0.0, 2000.0, 0};

@@ -80,11 +80,11 @@ static double mu_r_jkr(double Y, double r_eff)
     return M_PI * a0 / (4.0 * r_eff) * ETA_ADH;
 }
 
-static void set_models(dem_system *s, enum rolling_model model)
+static void set_models(dem_system *s, enum dem_rolling_model model)
 {
-    const cdt_params cdt = {MU_R};
-    const epsd_params epsd = {MU_R, ETA_R};
-    const cdt_jkr_params jkr = {W_ADH, ETA_ADH};
+    const dem_cdt_params cdt = {MU_R};
+    const dem_epsd_params epsd = {MU_R, ETA_R};
+    const dem_cdt_jkr_params jkr = {W_ADH, ETA_ADH};
     if (model == rolling_cdt) dem_materials_set_model_values(&s->materials, 0, 0, SLOT_ROLLING, &cdt, sizeof cdt);
     if (model == rolling_epsd) dem_materials_set_model_values(&s->materials, 0, 0, SLOT_ROLLING, &epsd, sizeof epsd);
     if (model == rolling_cdt_jkr) dem_materials_set_model_values(&s->materials, 0, 0, SLOT_ROLLING, &jkr, sizeof jkr);
@@ -92,7 +92,7 @@ static void set_models(dem_system *s, enum rolling_model model)
 }
 
 /* mu_r the model should apply to a sphere on a wall */
-static double wall_mu_r(enum rolling_model model)
+static double wall_mu_r(enum dem_rolling_model model)
 {
     dem_system s;
     make_system(&s, E, NU, RHO, 0.5, 0.5, normal_hertz, tangential_history, 0.1);
@@ -102,7 +102,7 @@ static double wall_mu_r(enum rolling_model model)
 }
 
 /* Sphere on the plane z = 0 at its equilibrium overlap, gravity tilted by th, rolling at v0. */
-static void wall_system(dem_system *s, enum rolling_model model, double th, double v0)
+static void wall_system(dem_system *s, enum dem_rolling_model model, double th, double v0)
 {
     make_system(s, E, NU, RHO, 0.5, 0.5, normal_hertz, tangential_history, 0.1);
     set_models(s, model);
@@ -120,7 +120,7 @@ static void wall_system(dem_system *s, enum rolling_model model, double th, doub
     dem_system_setup(s);
 }
 
-static void level_rolling(enum rolling_model model)
+static void level_rolling(enum dem_rolling_model model)
 {
     const double mu_r = wall_mu_r(model);
     const double s_ref = 7.0 * V0 * V0 / (10.0 * mu_r * G), t_stop = 1.4 * V0 / (mu_r * G);
@@ -147,7 +147,7 @@ static void level_rolling(enum rolling_model model)
     dem_system_free(&s);
 }
 
-static void incline(enum rolling_model model)
+static void incline(enum dem_rolling_model model)
 {
     const double mu_r = wall_mu_r(model), s_level = 7.0 * V0 * V0 / (10.0 * mu_r * G);
     char what[128];
@@ -195,7 +195,7 @@ static int index_of(const dem_system *s, int64_t id)
 
 static double norm3(const double a[3]) { return sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
 
-static void pair_torques(enum rolling_model model)
+static void pair_torques(enum dem_rolling_model model)
 {
     dem_system s;
     make_system(&s, E, NU, RHO, 0.5, 0.5, normal_hertz, tangential_none, 0.1);
@@ -238,7 +238,7 @@ static void angular_momentum(const dem_system *s, double L[3])
     }
 }
 
-static void pair_collision(enum rolling_model model)
+static void pair_collision(enum dem_rolling_model model)
 {
     dem_system s;
     make_system(&s, E, NU, RHO, 0.5, 0.5, normal_hertz, tangential_history, 0.1);
@@ -276,7 +276,7 @@ static void jkr_torque(int torsion, double M[3], double *closed_form)
     dem_system s;
     make_system(&s, E, NU, RHO, 0.5, 0.5, normal_hertz, tangential_none, 0.1);
     set_models(&s, rolling_cdt_jkr);
-    const cdt_jkr_case cc = {torsion};
+    const dem_cdt_jkr_case cc = {torsion};
     SET_MODEL_CASE(&s, SLOT_ROLLING, cc);
     const double overlap = 2e-5;
     add_sphere(&s, -RAD + 0.5 * overlap, 0, 0, 0, 0, 0, RAD);

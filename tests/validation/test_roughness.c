@@ -63,9 +63,9 @@
 #include "harness.h"
 #include "rng.h"
 
-static wall *add_wall(dem_system *s)
+static dem_wall *add_wall(dem_system *s)
 {
-    wall *w = dem_walls_add(s);
+    dem_wall *w = dem_walls_add(s);
     memset(w, 0, sizeof *w);
     snprintf(w->name, sizeof w->name, "wall%d", s->nwalls);
     return w;
@@ -75,7 +75,7 @@ static wall *add_wall(dem_system *s)
 static void add_box(dem_system *s, const double lo[3], const double hi[3])
 {
     for (int k = 0; k < 6; k++) {
-        wall *w = add_wall(s);
+        dem_wall *w = add_wall(s);
         w->kind = WALL_PLANE;
         w->bounded = 1;
         for (int q = 0; q < 3; q++) { w->bounds_min[q] = lo[q]; w->bounds_max[q] = hi[q]; }
@@ -113,8 +113,8 @@ static const double E = 5e6, NU = 0.45, RHO = 2500;
 
 /* ---------------------------------------------------------------- 1, 5: small bed */
 
-static void small_bed(enum surface_model surface, roughness_case rp, int nsteps, state *out,
-                      int *pair_contacts, int *wall_contacts)
+static void small_bed(enum dem_surface_model surface, dem_roughness_case rp, int nsteps, state *out,
+                      int *pair_contacts, int *dem_wall_contacts)
 {
     const double L = 4e-3;
     dem_system s;
@@ -124,7 +124,7 @@ static void small_bed(enum surface_model surface, roughness_case rp, int nsteps,
     s.gravity[2] = -9.81;
     const double lo[3] = {-L, -L, -L}, hi[3] = {L, L, L};
     add_box(&s, lo, hi);
-    rng g;
+    dem_rng g;
     rng_seed(&g, 7);
     for (int k = 0; k < 320; k++) {
         const double r = 0.35e-3 + 0.1e-3 * rng_uniform(&g);
@@ -150,13 +150,13 @@ static void small_bed(enum surface_model surface, roughness_case rp, int nsteps,
     }
     gather(&s, out);
     if (pair_contacts) *pair_contacts = pairs;
-    if (wall_contacts) *wall_contacts = walls;
+    if (dem_wall_contacts) *dem_wall_contacts = walls;
     dem_system_free(&s);
 }
 
 static void zero_scatter(void)
 {
-    const roughness_case none = {SCATTER_NORMAL, 0.0, 1.0, 1}, zero = {SCATTER_NORMAL, 0.0, 1.0, 12345};
+    const dem_roughness_case none = {SCATTER_NORMAL, 0.0, 1.0, 1}, zero = {SCATTER_NORMAL, 0.0, 1.0, 12345};
     state a, b;
     int pairs, walls;
     small_bed(surface_default, none, 1000, &a, &pairs, &walls);
@@ -171,7 +171,7 @@ static void zero_scatter(void)
 
 static void reproducible(void)
 {
-    const roughness_case r1 = {SCATTER_NORMAL, 0.3, 1.0, 1}, r2 = {SCATTER_NORMAL, 0.3, 1.0, 2};
+    const dem_roughness_case r1 = {SCATTER_NORMAL, 0.3, 1.0, 1}, r2 = {SCATTER_NORMAL, 0.3, 1.0, 2};
     state a, b, c, d;
     small_bed(surface_roughness, r1, 2000, &a, NULL, NULL);
     small_bed(surface_roughness, r1, 2000, &b, NULL, NULL);
@@ -190,7 +190,7 @@ static void reproducible(void)
 static const double IMP_R = 1e-3, IMP_V = 0.5, IMP_SPACING = 3e-3;
 
 /* Rebound velocities by id; *start: the step at which the contacts started. */
-static void impacts(roughness_case rp, int reversed, double (*vout)[3], long *start)
+static void impacts(dem_roughness_case rp, int reversed, double (*vout)[3], long *start)
 {
     dem_system s;
     make_system(&s, E, NU, RHO, 1.0, 0.0, normal_hertz, tangential_none, 0.2);
@@ -222,7 +222,7 @@ static void impacts(roughness_case rp, int reversed, double (*vout)[3], long *st
 }
 
 /* Mean and standard deviation of atan(2 tan|dG|) over the distribution (Simpson). */
-static void quadrature(roughness_case rp, double *mean, double *sd)
+static void quadrature(dem_roughness_case rp, double *mean, double *sd)
 {
     const int n = 20000;
     const double h = rp.max / n;
@@ -237,7 +237,7 @@ static void quadrature(roughness_case rp, double *mean, double *sd)
     *sd = sqrt(s2 / s0 - *mean * *mean);
 }
 
-static void rebound_angles(roughness_case rp, const char *label, double (*v)[3], long start)
+static void rebound_angles(dem_roughness_case rp, const char *label, double (*v)[3], long start)
 {
     double sum = 0.0, sum2 = 0.0, vz = 0.0, worst = 1.0, worst_cos = 1.0;
     double c1 = 0.0, s1 = 0.0, c2 = 0.0, s2 = 0.0;
@@ -286,13 +286,13 @@ static void rebound(void)
 {
     double (*v)[3] = calloc(NIMP, sizeof *v), (*vr)[3] = calloc(NIMP, sizeof *vr);
     long start, start_r;
-    const roughness_case normal = {SCATTER_NORMAL, 0.1, 0.2, 2024};
+    const dem_roughness_case normal = {SCATTER_NORMAL, 0.1, 0.2, 2024};
     impacts(normal, 0, v, &start);
     rebound_angles(normal, "normal 0.1, max 0.2", v, start);
     impacts(normal, 1, vr, &start_r);
     check_true("5. impacts in reversed order: rebound velocity per id bitwise",
                start == start_r && !memcmp(v, vr, NIMP * sizeof *v));
-    const roughness_case uniform = {SCATTER_UNIFORM, 0.0, 0.4, 77};
+    const dem_roughness_case uniform = {SCATTER_UNIFORM, 0.0, 0.4, 77};
     impacts(uniform, 0, v, &start);
     rebound_angles(uniform, "uniform [0, 0.4]", v, start);
     free(v);
@@ -301,12 +301,12 @@ static void rebound(void)
 
 /* ---------------------------------------------------------------- 3: momentum */
 
-static void pair_collision(enum surface_model surface, double p0[3], double p1[3], double vfinal[3], int *touched)
+static void pair_collision(enum dem_surface_model surface, double p0[3], double p1[3], double vfinal[3], int *touched)
 {
     dem_system s;
     make_system(&s, E, NU, RHO, 0.5, 0.5, normal_hertz, tangential_history, 0.02);
     s.models.surface = surface;
-    const roughness_case rc = {SCATTER_NORMAL, 0.3, 1.0, 99};
+    const dem_roughness_case rc = {SCATTER_NORMAL, 0.3, 1.0, 99};
     SET_MODEL_CASE(&s, SLOT_SURFACE, rc);
     add_sphere(&s, 0, 0, 0, 0.5, 0.2, 0.1, 1e-3);
     add_sphere(&s, 2.6e-3, 1.2e-3, 0.4e-3, -0.1, 0.05, -0.3, 1.3e-3);
@@ -354,7 +354,7 @@ static void penetration(void)
     dem_system s;
     make_system(&s, E, NU, RHO, 0.5, 0.5, normal_hertz, tangential_history, 2 * L);
     s.models.surface = surface_roughness;
-    const roughness_case rc = {SCATTER_NORMAL, 0.5, 1.2, 5};
+    const dem_roughness_case rc = {SCATTER_NORMAL, 0.5, 1.2, 5};
     SET_MODEL_CASE(&s, SLOT_SURFACE, rc);
     s.gravity[2] = -9.81;
     s.domain_min[2] = -5e-3;
@@ -362,7 +362,7 @@ static void penetration(void)
     s.max_overlap_fraction = 1e30;   /* no stop on overlap: the loop below records it */
     const double lo[3] = {-L, -L, 0.0}, hi[3] = {L, L, H};
     add_box(&s, lo, hi);
-    rng g;
+    dem_rng g;
     rng_seed(&g, 11);
     for (int k = 0; k < 1296; k++) {
         const double r = 0.8e-3 + 0.2e-3 * rng_uniform(&g);

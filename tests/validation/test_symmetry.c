@@ -20,7 +20,7 @@
 
 static void add_symmetry(dem_system *s, const double p[3], const double n[3])
 {
-    symmetry_plane *sp = &s->symmetry_planes[s->nsymmetry++];
+    dem_symmetry_plane *sp = &s->symmetry_planes[s->nsymmetry++];
     memset(sp, 0, sizeof *sp);
     snprintf(sp->name, sizeof sp->name, "mirror%d", s->nsymmetry);
     const double len = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
@@ -137,7 +137,7 @@ static void bed(void)
     add_plane(&s, -L, 0, 0, 1, 0, 0);
     const double p[3] = {L, 0, 0}, n[3] = {-1, 0, 0};
     add_symmetry(&s, p, n);               /* the +x face */
-    rng r;
+    dem_rng r;
     rng_seed(&r, 7);
     int placed = 0;
     for (int a = 0; a < 7 && placed < 300; a++)
@@ -154,7 +154,7 @@ static void bed(void)
     s.dt = t_contact / 50.0;
     s.nlist.skin = 0.1e-3;
     dem_system_setup(&s);
-    const particles *q = &s.p;
+    const dem_particles *q = &s.p;
     double elastic = 0.0;
     /* Hertz energy 8/15 Y* sqrt(R*) delta^(5/2) of pair and wall contacts; the mirror has none */
 #define ENERGY(out)                                                                                      \

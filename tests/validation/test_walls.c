@@ -11,9 +11,9 @@
 #include "harness.h"
 #include "rng.h"
 
-static wall *add_wall(dem_system *s)
+static dem_wall *add_wall(dem_system *s)
 {
-    wall *w = dem_walls_add(s);
+    dem_wall *w = dem_walls_add(s);
     memset(w, 0, sizeof *w);
     snprintf(w->name, sizeof w->name, "wall%d", s->nwalls);
     return w;
@@ -25,7 +25,7 @@ static void bounded_plane(void)
         dem_system s;
         make_system(&s, 5e6, 0.45, 2500, 0.5, 0.3, normal_hertz, tangential_history, 0.1);
         s.gravity[2] = -9.81;
-        wall *w = add_wall(&s);
+        dem_wall *w = add_wall(&s);
         w->kind = WALL_PLANE;
         w->normal[2] = 1.0;
         w->bounded = 1;
@@ -51,14 +51,14 @@ static void box(void)
     dem_system s;
     make_system(&s, 5e6, 0.45, 2500, 1.0, 0.0, normal_hertz, tangential_none, 2 * L);
     for (int k = 0; k < 6; k++) {   /* the six faces, as case.c builds a box wall */
-        wall *w = add_wall(&s);
+        dem_wall *w = add_wall(&s);
         w->kind = WALL_PLANE;
         w->bounded = 1;
         for (int q = 0; q < 3; q++) { w->bounds_min[q] = -L; w->bounds_max[q] = L; }
         w->point[k / 2] = k % 2 ? L : -L;
         w->normal[k / 2] = k % 2 ? -1.0 : 1.0;
     }
-    rng g;
+    dem_rng g;
     rng_seed(&g, 3);
     for (int k = 0; k < 27; k++)
         add_sphere(&s, -L + (k % 3 + 0.5) * 2 * L / 3, -L + (k / 3 % 3 + 0.5) * 2 * L / 3, -L + (k / 9 + 0.5) * 2 * L / 3,
@@ -89,7 +89,7 @@ static double radial_impact(int kind)
 {
     dem_system s;
     make_system(&s, 5e6, 0.45, 2500, 0.7, 0.0, normal_hertz, tangential_none, 0.1);
-    wall *w = add_wall(&s);
+    dem_wall *w = add_wall(&s);
     const double r = 1e-3, R = 0.02, v = 0.5;
     if (kind == 0) {             /* plane x = R, normal -x */
         w->kind = WALL_PLANE;

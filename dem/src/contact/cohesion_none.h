@@ -4,8 +4,8 @@
 
 #include "../materials.h"
 
-static inline double cohesion_none_force(const contact *k, const pair_coeffs *c) { return 0.0; }
+static inline double cohesion_none_force(const dem_contact *k, const dem_pair_coeffs *c) { return 0.0; }
 
-static const contact_model cohesion_none_model = {.slot = SLOT_COHESION, .name = "none"};
+static const dem_contact_model cohesion_none_model = {.slot = SLOT_COHESION, .name = "none"};
 
 #endif

@@ -11,20 +11,20 @@
 #include <math.h>
 #include "../materials.h"
 
-typedef struct sjkr_params {
+typedef struct dem_sjkr_params {
     double k_coh;   /* cohesion energy density [J/m^3] */
-} sjkr_params;
+} dem_sjkr_params;
 
-static const model_param sjkr_param_table[] = {
-    {"cohesionEnergyDensity", "J/m^3", NAN, 0.0, 1e12, offsetof(sjkr_params, k_coh)},
+static const dem_model_param sjkr_param_table[] = {
+    {"cohesionEnergyDensity", "J/m^3", NAN, 0.0, 1e12, offsetof(dem_sjkr_params, k_coh)},
 };
 
-static inline double cohesion_sjkr_force(const contact *k, const pair_coeffs *c)
+static inline double cohesion_sjkr_force(const dem_contact *k, const dem_pair_coeffs *c)
 {
-    return -MODEL_PARAMS(c, SLOT_COHESION, sjkr_params)->k_coh * M_PI * k->a2;
+    return -MODEL_PARAMS(c, SLOT_COHESION, dem_sjkr_params)->k_coh * M_PI * k->a2;
 }
 
-static const contact_model cohesion_sjkr_model = {
+static const dem_contact_model cohesion_sjkr_model = {
     .slot = SLOT_COHESION, .name = "sjkr", .needs_contact_radius = 1,
     .params = sjkr_param_table, .nparams = 1,
 };

@@ -9,7 +9,7 @@
 
 #define ALWAYS_INLINE inline __attribute__((always_inline))
 
-static ALWAYS_INLINE void surface_normal(int id, const contact *k, const contact_models *m, double *h, double en_f[3])
+static ALWAYS_INLINE void surface_normal(int id, const dem_contact *k, const dem_contact_models *m, double *h, double en_f[3])
 {
     switch (id) {
 #define CASE(S, N) case S##_##N: S##_##N##_normal(k, m, h, en_f); return;
@@ -19,7 +19,7 @@ static ALWAYS_INLINE void surface_normal(int id, const contact *k, const contact
     __builtin_unreachable();   /* ids come from models.h */
 }
 
-static ALWAYS_INLINE void surface_wall_guard(int id, const contact_models *m, const double en[3], const double f[3],
+static ALWAYS_INLINE void surface_wall_guard(int id, const dem_contact_models *m, const double en[3], const double f[3],
                                              double v[3])
 {
     switch (id) {
@@ -30,7 +30,7 @@ static ALWAYS_INLINE void surface_wall_guard(int id, const contact_models *m, co
     __builtin_unreachable();   /* ids come from models.h */
 }
 
-static ALWAYS_INLINE normal_result normal_force(int id, const contact *k, const pair_coeffs *c, const contact_models *m,
+static ALWAYS_INLINE dem_normal_result normal_force(int id, const dem_contact *k, const dem_pair_coeffs *c, const dem_contact_models *m,
                                                 double *h)
 {
     switch (id) {
@@ -41,7 +41,7 @@ static ALWAYS_INLINE normal_result normal_force(int id, const contact *k, const 
     __builtin_unreachable();   /* ids come from models.h */
 }
 
-static ALWAYS_INLINE double cohesion_force(int id, const contact *k, const pair_coeffs *c)
+static ALWAYS_INLINE double cohesion_force(int id, const dem_contact *k, const dem_pair_coeffs *c)
 {
     switch (id) {
 #define CASE(S, N) case S##_##N: return S##_##N##_force(k, c);
@@ -51,7 +51,7 @@ static ALWAYS_INLINE double cohesion_force(int id, const contact *k, const pair_
     __builtin_unreachable();   /* ids come from models.h */
 }
 
-static ALWAYS_INLINE void tangential_force(int id, const contact *k, const pair_coeffs *c, normal_result n,
+static ALWAYS_INLINE void tangential_force(int id, const dem_contact *k, const dem_pair_coeffs *c, dem_normal_result n,
                                            const double en_f[3], const double vt[3], double *h, double ft[3])
 {
     switch (id) {
@@ -62,8 +62,8 @@ static ALWAYS_INLINE void tangential_force(int id, const contact *k, const pair_
     __builtin_unreachable();   /* ids come from models.h */
 }
 
-static ALWAYS_INLINE void rolling_torque(int id, const contact *k, const pair_coeffs *c, const contact_models *m,
-                                         normal_result n, const double w[3], double *h, double mr[3])
+static ALWAYS_INLINE void rolling_torque(int id, const dem_contact *k, const dem_pair_coeffs *c, const dem_contact_models *m,
+                                         dem_normal_result n, const double w[3], double *h, double mr[3])
 {
     switch (id) {
 #define CASE(S, N) case S##_##N: S##_##N##_torque(k, c, m, n, w, h, mr); return;
@@ -107,7 +107,7 @@ static ALWAYS_INLINE int contact_needs_radius(int normal, int cohesion, int surf
  * the normal the forces use). Returns 0, with the history cleared, if the normal model finds no
  * contact (a model with a reach, outside its neck). */
 static ALWAYS_INLINE int contact_evaluate(int normal, int tangential, int cohesion, int rolling, int surface,
-                                          const contact_models *m, const pair_coeffs *c, contact *k,
+                                          const dem_contact_models *m, const dem_pair_coeffs *c, dem_contact *k,
                                           double *restrict h, double fi[3], double fj[3], double ti[3], double tj[3])
 {
     const int h_roll = tangential_history_size(tangential), h_norm = h_roll + rolling_history_size(rolling);
@@ -117,7 +117,7 @@ static ALWAYS_INLINE int contact_evaluate(int normal, int tangential, int cohesi
     if (surface != surface_default) surface_normal(surface, k, m, h + h_surf, en_f);
     k->vn = k->vr[0] * en_f[0] + k->vr[1] * en_f[1] + k->vr[2] * en_f[2];
 
-    normal_result n = normal_force(normal, k, c, m, h + h_norm);
+    dem_normal_result n = normal_force(normal, k, c, m, h + h_norm);
     if (normal_has_reach(normal) && !n.active) {
         for (int q = 0; q < hs; q++) h[q] = 0.0;
         return 0;
@@ -170,7 +170,7 @@ static ALWAYS_INLINE int contact_evaluate(int normal, int tangential, int cohesi
     X(hertz, history, none, epsd, default)
 
 /* The index of the case's combination in SPECIALISED_KERNELS, or -1. */
-static inline int contact_specialised(const contact_models *m)
+static inline int contact_specialised(const dem_contact_models *m)
 {
 #define IDS(N, T, C, R, S) {normal_##N, tangential_##T, cohesion_##C, rolling_##R, surface_##S},
     static const int ids[][SLOT_COUNT] = {SPECIALISED_KERNELS(IDS)};

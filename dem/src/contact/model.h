@@ -26,71 +26,71 @@
 #include <stddef.h>
 #include <stdint.h>
 
-enum contact_slot { SLOT_NORMAL, SLOT_TANGENTIAL, SLOT_COHESION, SLOT_ROLLING, SLOT_SURFACE, SLOT_COUNT };
+enum dem_contact_slot { SLOT_NORMAL, SLOT_TANGENTIAL, SLOT_COHESION, SLOT_ROLLING, SLOT_SURFACE, SLOT_COUNT };
 
 /* Doubles a model may keep per material pair (its parameters, then its derived constants) and
  * per case; each model's parameter struct must fit (checked by a static assertion). */
 #define MODEL_VALUES 8
 
 /* The models chosen for a case, and their case-wide settings. */
-typedef struct contact_models {
+typedef struct dem_contact_models {
     int normal, tangential, cohesion, rolling, surface;   /* ids: enum normal_model, ... */
     double fn_floor;      /* limitForce: 0 (no pull from the dashpot), else -inf */
     /* per slot: the chosen model's case-wide settings (its *_case struct), from contactModels */
     double values[SLOT_COUNT][MODEL_VALUES];
-} contact_models;
+} dem_contact_models;
 
 /* A model's settings struct seen in the case-wide values of its slot. */
 #define MODEL_CASE(m, slot, type) ((const type *)(m)->values[slot])
 
 /* A numeric parameter of one interaction (a material pair in demProperties' interactions). */
-typedef struct model_param {
+typedef struct dem_model_param {
     const char *key;
     const char *unit;       /* SI, "-" for a number without unit */
     double fallback;        /* NAN: required */
     double lo, hi;          /* accepted range, inclusive */
     size_t offset;          /* where it goes: offsetof(<model>_params, field) */
-} model_param;
+} dem_model_param;
 
-struct dict;
-struct pair_coeffs;
+struct dem_dict;
+struct dem_pair_coeffs;
 /* A contact model: what the generic code needs to know about it. */
-typedef struct contact_model {
-    enum contact_slot slot;
+typedef struct dem_contact_model {
+    enum dem_contact_slot slot;
     const char *name;                 /* as written in contactModels */
     int history;                      /* doubles of history per contact */
     int history_antisymmetric;        /* leading doubles that change sign when (i, j) swap */
     int needs_contact_radius;         /* the loops compute a^2 of the intersection circle */
-    const model_param *params;        /* per interaction */
+    const dem_model_param *params;        /* per interaction */
     int nparams;
     /* optional: reject a parameter combination; returns a message and sets *key, or NULL */
     const char *(*check)(const double *values, const char **key);
     /* optional: derived constants (into the same values, after the parameters) */
     void (*prepare)(double *values);
     /* optional: read the case-wide settings from contactModels into values */
-    void (*read_case)(const struct dict *contact_models_dict, double *values);
+    void (*read_case)(const struct dem_dict *contact_models_dict, double *values);
     /* normal models: duration of an elastic impact at relative speed v [s], and its name */
-    double (*contact_time)(const struct pair_coeffs *c, const contact_models *m, double r_eff,
+    double (*contact_time)(const struct dem_pair_coeffs *c, const dem_contact_models *m, double r_eff,
                            double m_eff, double v);
     const char *contact_time_name;
     /* optional: the largest separation (negative overlap) at which a contact with effective
      * radius r_eff still acts [m] (a JKR neck); 0 when NULL */
-    double (*reach)(const struct pair_coeffs *c, double r_eff);
-} contact_model;
+    double (*reach)(const struct dem_pair_coeffs *c, double r_eff);
+} dem_contact_model;
 
 /* What the normal model hands to the other slots. */
-typedef struct normal_result {
+typedef struct dem_normal_result {
     double fn;        /* normal force magnitude, + repulsive [N] */
     double kn;        /* normal stiffness [N/m] (the rolling models use it) */
     double fn_spring; /* elastic part of fn [N] */
     double kt;        /* tangential stiffness [N/m] */
     double gammat;    /* tangential damping [N s/m] */
     int active;       /* 0: no contact (a model with a reach, outside its contact) */
-} normal_result;
+} dem_normal_result;
 
 /* One contact as the pair and wall loops see it; a wall is a partner of infinite radius and
  * mass at rest (R* = R_i, m* = m_i, lever_j = 0, w_j = 0). */
-typedef struct contact {
+typedef struct dem_contact {
     double en[3];           /* unit normal, from j (or the wall) to i */
     double delta;           /* overlap [m]; negative: a gap (models with a reach) */
     double r_eff, m_eff;    /* R*, m* */
@@ -105,7 +105,7 @@ typedef struct contact {
     double sign;            /* +1 if en points from key_hi to key_lo's particle (i is key_lo) */
     double dt;              /* [s] */
     long step;
-} contact;
+} dem_contact;
 
 /* Relative tangential velocity of the contact points: v_r - v_n n_f - w_r x n, with
  * w_r = c_i omega_i + c_j omega_j (levers c to the centre of the overlap), n the geometric

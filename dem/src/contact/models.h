@@ -39,19 +39,19 @@
     X(surface, roughness)
 
 #define CONTACT_MODEL_ID(S, N) S##_##N,
-enum normal_model { NORMAL_MODELS(CONTACT_MODEL_ID) NORMAL_COUNT };
-enum tangential_model { TANGENTIAL_MODELS(CONTACT_MODEL_ID) TANGENTIAL_COUNT };
-enum cohesion_model { COHESION_MODELS(CONTACT_MODEL_ID) COHESION_COUNT };
-enum rolling_model { ROLLING_MODELS(CONTACT_MODEL_ID) ROLLING_COUNT };
-enum surface_model { SURFACE_MODELS(CONTACT_MODEL_ID) SURFACE_COUNT };
+enum dem_normal_model { NORMAL_MODELS(CONTACT_MODEL_ID) NORMAL_COUNT };
+enum dem_tangential_model { TANGENTIAL_MODELS(CONTACT_MODEL_ID) TANGENTIAL_COUNT };
+enum dem_cohesion_model { COHESION_MODELS(CONTACT_MODEL_ID) COHESION_COUNT };
+enum dem_rolling_model { ROLLING_MODELS(CONTACT_MODEL_ID) ROLLING_COUNT };
+enum dem_surface_model { SURFACE_MODELS(CONTACT_MODEL_ID) SURFACE_COUNT };
 #undef CONTACT_MODEL_ID
 
 /* The descriptor of model id in a slot (NULL if there is none). */
-const contact_model *dem_contact_model_get(enum contact_slot slot, int id);
+const dem_contact_model *dem_contact_model_get(enum dem_contact_slot slot, int id);
 /* The names of a slot's models, NULL-terminated (for the dictionary's choice). */
-const char *const *dem_contact_model_names(enum contact_slot slot);
+const char *const *dem_contact_model_names(enum dem_contact_slot slot);
 /* The id of the chosen model in each slot, as an array indexed by enum contact_slot. */
-static inline int contact_model_id(const contact_models *m, enum contact_slot slot)
+static inline int contact_model_id(const dem_contact_models *m, enum dem_contact_slot slot)
 {
     const int ids[SLOT_COUNT] = {m->normal, m->tangential, m->cohesion, m->rolling, m->surface};
     return ids[slot];
@@ -61,9 +61,9 @@ static inline int contact_model_id(const contact_models *m, enum contact_slot sl
  * [tangential][rolling][normal][surface][cohesion]; the tangential and rolling parts change
  * sign when i and j swap (they are built from v_i - v_j and omega_i - omega_j), the others do
  * not (each model states its antisymmetric part; it must be all or nothing of its history). */
-int dem_contact_history_size(const contact_models *m);
+int dem_contact_history_size(const dem_contact_models *m);
 /* The leading part that is antisymmetric in (i, j). */
-int dem_contact_history_antisymmetric(const contact_models *m);
+int dem_contact_history_antisymmetric(const dem_contact_models *m);
 /* Copy one contact's history; flipped: the pair is now stored as (j, i). */
 void dem_contact_history_copy(double *dst, const double *src, int size, int antisymmetric, int flipped);
 

@@ -14,20 +14,20 @@
 #include "../materials.h"
 #include "normal_hertz.h"
 
-typedef struct dmt_params {
+typedef struct dem_dmt_params {
     double w;   /* work of adhesion [J/m^2] */
-} dmt_params;
+} dem_dmt_params;
 
-static const model_param dmt_param_table[] = {
-    {"workOfAdhesion", "J/m^2", NAN, 0.0, 1e3, offsetof(dmt_params, w)},
+static const dem_model_param dmt_param_table[] = {
+    {"workOfAdhesion", "J/m^2", NAN, 0.0, 1e3, offsetof(dem_dmt_params, w)},
 };
 
-static inline normal_result normal_dmt_force(const contact *k, const pair_coeffs *c,
-                                             const contact_models *m, double *restrict h)
+static inline dem_normal_result normal_dmt_force(const dem_contact *k, const dem_pair_coeffs *c,
+                                             const dem_contact_models *m, double *restrict h)
 {
-    normal_result r;
+    dem_normal_result r;
     const double gamma_n = hertz_stiffness_damping(c, sqrt(k->r_eff * k->delta), k->m_eff, &r);
-    r.fn_spring = r.kn * k->delta - 2.0 * M_PI * MODEL_PARAMS(c, SLOT_NORMAL, dmt_params)->w * k->r_eff;
+    r.fn_spring = r.kn * k->delta - 2.0 * M_PI * MODEL_PARAMS(c, SLOT_NORMAL, dem_dmt_params)->w * k->r_eff;
     r.fn = r.fn_spring - gamma_n * k->vn;
     return r;
 }
@@ -35,11 +35,11 @@ static inline normal_result normal_dmt_force(const contact *k, const pair_coeffs
 static inline const char *dmt_check(const double *values, const char **key)
 {
     *key = "workOfAdhesion";
-    return ((const dmt_params *)values)->w > 0.0 ? NULL
+    return ((const dem_dmt_params *)values)->w > 0.0 ? NULL
         : "the dmt normal model needs a positive work of adhesion [J/m^2] (use hertz without adhesion)";
 }
 
-static const contact_model normal_dmt_model = {
+static const dem_contact_model normal_dmt_model = {
     .slot = SLOT_NORMAL, .name = "dmt",
     .params = dmt_param_table, .nparams = 1, .check = dmt_check,
     .contact_time = hertz_contact_time, .contact_time_name = "Hertz",

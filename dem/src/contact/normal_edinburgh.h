@@ -23,35 +23,35 @@
 #include "../materials.h"
 
 /* Parameters per interaction (keys in edinburgh_param_table), then the derived lambda. */
-typedef struct edinburgh_params {
+typedef struct dem_edinburgh_params {
     double kappa21;     /* k2/k1 > 1 [-] (eq. 1) */
     double gamma_s;     /* surface energy [J/m^2] (eq. 5) */
     double d_ex;        /* loading exponent >= 1 [-] (eq. 2) */
     double c_ex;        /* adhesion exponent > 0 [-] (eq. 2) */
     double f0;          /* tension threshold F_0 [N] (eq. 9) */
     double lambda;      /* (1 - 1/kappa21)^(1/d_ex) (eq. 3), derived */
-} edinburgh_params;
-_Static_assert(sizeof(edinburgh_params) <= MODEL_VALUES * sizeof(double), "edinburgh_params too large");
+} dem_edinburgh_params;
+_Static_assert(sizeof(dem_edinburgh_params) <= MODEL_VALUES * sizeof(double), "edinburgh_params too large");
 
-static const model_param edinburgh_param_table[] = {
-    {"unloadingRatio", "-", NAN, -1e300, 1e6, offsetof(edinburgh_params, kappa21)},
-    {"surfaceEnergy", "J/m^2", 0.0, 0.0, 1e3, offsetof(edinburgh_params, gamma_s)},
-    {"loadingExponent", "-", 1.5, 1.0, 3.0, offsetof(edinburgh_params, d_ex)},
-    {"adhesionExponent", "-", 1.5, 1e-3, 3.0, offsetof(edinburgh_params, c_ex)},
-    {"tensionThreshold", "N", 0.0, -1e6, 1e6, offsetof(edinburgh_params, f0)},
+static const dem_model_param edinburgh_param_table[] = {
+    {"unloadingRatio", "-", NAN, -1e300, 1e6, offsetof(dem_edinburgh_params, kappa21)},
+    {"surfaceEnergy", "J/m^2", 0.0, 0.0, 1e3, offsetof(dem_edinburgh_params, gamma_s)},
+    {"loadingExponent", "-", 1.5, 1.0, 3.0, offsetof(dem_edinburgh_params, d_ex)},
+    {"adhesionExponent", "-", 1.5, 1e-3, 3.0, offsetof(dem_edinburgh_params, c_ex)},
+    {"tensionThreshold", "N", 0.0, -1e6, 1e6, offsetof(dem_edinburgh_params, f0)},
 };
 
 /* k1 of eq. 1: 2 Y* R* for a linear loading branch, 4/3 Y* sqrt(R*) otherwise */
-static inline double edinburgh_k1(const pair_coeffs *c, const edinburgh_params *p, double r_eff)
+static inline double edinburgh_k1(const dem_pair_coeffs *c, const dem_edinburgh_params *p, double r_eff)
 {
     return p->d_ex == 1.0 ? 2.0 * c->Y_eff * r_eff : 4.0 / 3.0 * c->Y_eff * sqrt(r_eff);
 }
 
 /* k->a2: the contact radius squared (eq. 5); h: delta_p,max (1 double). */
-static inline normal_result normal_edinburgh_force(const contact *k, const pair_coeffs *c,
-                                                   const contact_models *m, double *restrict h)
+static inline dem_normal_result normal_edinburgh_force(const dem_contact *k, const dem_pair_coeffs *c,
+                                                   const dem_contact_models *m, double *restrict h)
 {
-    const edinburgh_params *p = MODEL_PARAMS(c, SLOT_NORMAL, edinburgh_params);
+    const dem_edinburgh_params *p = MODEL_PARAMS(c, SLOT_NORMAL, dem_edinburgh_params);
     const double delta = k->delta, a = sqrt(k->a2);
     const double d_ex = p->d_ex, c_ex = p->c_ex, xi = 1.0 / d_ex;                       /* eq. 2 */
     const double k1 = edinburgh_k1(c, p, k->r_eff);                                     /* eq. 1 */
@@ -79,7 +79,7 @@ static inline normal_result normal_edinburgh_force(const contact *k, const pair_
     const double pi_over_log_e = M_PI / c->log_e;                       /* e = 1: -inf, gamma 0 */
     const double gamma_n = sqrt(4.0 * k->m_eff * k1 / (1.0 + pi_over_log_e * pi_over_log_e));  /* eq. 8 */
 
-    normal_result r;
+    dem_normal_result r;
     r.fn = f_el - gamma_n * k->vn + p->f0;                                              /* eq. 8, 9 */
     r.kn = k1 * d_ex * (delta > 0.0 ? delta_d / delta : 0.0);
     r.fn_spring = f_el;
@@ -91,10 +91,10 @@ static inline normal_result normal_edinburgh_force(const contact *k, const pair_
 
 /* Elastic impact on F = k1 delta^d (eq. 1), 2 (delta_max / v) int_0^1 dx / sqrt(1 - x^(d+1)),
  * shortened by sqrt(kappa21) for the stiffer unloading branch. */
-static inline double edinburgh_contact_time(const pair_coeffs *c, const contact_models *m, double r_eff,
+static inline double edinburgh_contact_time(const dem_pair_coeffs *c, const dem_contact_models *m, double r_eff,
                                             double m_eff, double v)
 {
-    const edinburgh_params *p = MODEL_PARAMS(c, SLOT_NORMAL, edinburgh_params);
+    const dem_edinburgh_params *p = MODEL_PARAMS(c, SLOT_NORMAL, dem_edinburgh_params);
     const double d = p->d_ex, k1 = edinburgh_k1(c, p, r_eff);
     const double delta_max = pow((d + 1.0) * m_eff * v * v / (2.0 * k1), 1.0 / (d + 1.0));
     const double integral = sqrt(M_PI) * tgamma(1.0 + 1.0 / (d + 1.0)) / tgamma(0.5 + 1.0 / (d + 1.0));
@@ -103,7 +103,7 @@ static inline double edinburgh_contact_time(const pair_coeffs *c, const contact_
 
 static inline const char *edinburgh_check(const double *values, const char **key)
 {
-    const edinburgh_params *p = (const edinburgh_params *)values;
+    const dem_edinburgh_params *p = (const dem_edinburgh_params *)values;
     *key = "unloadingRatio";
     return p->kappa21 > 1.0 ? NULL
         : "kappa21 = k2/k1 must exceed 1: with k2 <= k1 the plastic overlap of seed 002 eq. 3 is undefined";
@@ -111,11 +111,11 @@ static inline const char *edinburgh_check(const double *values, const char **key
 
 static inline void edinburgh_prepare(double *values)
 {
-    edinburgh_params *p = (edinburgh_params *)values;
+    dem_edinburgh_params *p = (dem_edinburgh_params *)values;
     p->lambda = pow(1.0 - 1.0 / p->kappa21, 1.0 / p->d_ex);                            /* eq. 3 */
 }
 
-static const contact_model normal_edinburgh_model = {
+static const dem_contact_model normal_edinburgh_model = {
     .slot = SLOT_NORMAL, .name = "edinburgh", .history = 1, .needs_contact_radius = 1,
     .params = edinburgh_param_table, .nparams = 5,
     .check = edinburgh_check, .prepare = edinburgh_prepare,

@@ -13,7 +13,7 @@
 
 /* The Hertz stiffnesses and dashpots at contact radius a (hertz: a = sqrt(R* delta); the
  * adhesive models use them with their own a); fills kn, kt, gammat and returns gamma_n. */
-static inline double hertz_stiffness_damping(const pair_coeffs *c, double a, double m_eff, normal_result *r)
+static inline double hertz_stiffness_damping(const dem_pair_coeffs *c, double a, double m_eff, dem_normal_result *r)
 {
     const double sqrt_five_sixths = 0.91287092917527685576;
     const double sn = 2.0 * c->Y_eff * a;
@@ -25,10 +25,10 @@ static inline double hertz_stiffness_damping(const pair_coeffs *c, double a, dou
     return gamma_n;
 }
 
-static inline normal_result normal_hertz_force(const contact *k, const pair_coeffs *c,
-                                               const contact_models *m, double *restrict h)
+static inline dem_normal_result normal_hertz_force(const dem_contact *k, const dem_pair_coeffs *c,
+                                               const dem_contact_models *m, double *restrict h)
 {
-    normal_result r;
+    dem_normal_result r;
     const double gamma_n = hertz_stiffness_damping(c, sqrt(k->r_eff * k->delta), k->m_eff, &r);
     r.fn_spring = r.kn * k->delta;
     r.fn = r.fn_spring - gamma_n * k->vn;
@@ -36,13 +36,13 @@ static inline normal_result normal_hertz_force(const contact *k, const pair_coef
 }
 
 /* Duration of an elastic Hertz impact at relative speed v: 2.87 (m*^2 / (R* Y*^2 v))^(1/5). */
-static inline double hertz_contact_time(const pair_coeffs *c, const contact_models *m, double r_eff,
+static inline double hertz_contact_time(const dem_pair_coeffs *c, const dem_contact_models *m, double r_eff,
                                         double m_eff, double v)
 {
     return 2.87 * pow(m_eff * m_eff / (r_eff * c->Y_eff * c->Y_eff * v), 0.2);
 }
 
-static const contact_model normal_hertz_model = {
+static const dem_contact_model normal_hertz_model = {
     .slot = SLOT_NORMAL, .name = "hertz",
     .contact_time = hertz_contact_time, .contact_time_name = "Hertz",
 };

@@ -12,25 +12,25 @@
 #include "../dict.h"
 #include "../materials.h"
 
-typedef struct hooke_case {
+typedef struct dem_hooke_case {
     double characteristic_velocity;   /* V [m/s] */
-} hooke_case;
-_Static_assert(sizeof(hooke_case) <= MODEL_VALUES * sizeof(double), "hooke_case too large");
+} dem_hooke_case;
+_Static_assert(sizeof(dem_hooke_case) <= MODEL_VALUES * sizeof(double), "hooke_case too large");
 
-static inline double hooke_stiffness(const pair_coeffs *c, const contact_models *m, double r_eff, double m_eff)
+static inline double hooke_stiffness(const dem_pair_coeffs *c, const dem_contact_models *m, double r_eff, double m_eff)
 {
-    const double v_char = MODEL_CASE(m, SLOT_NORMAL, hooke_case)->characteristic_velocity;
+    const double v_char = MODEL_CASE(m, SLOT_NORMAL, dem_hooke_case)->characteristic_velocity;
     const double sr = sqrt(r_eff);
     return 16.0 / 15.0 * sr * c->Y_eff * pow(15.0 * m_eff * v_char * v_char / (16.0 * sr * c->Y_eff), 0.2);
 }
 
-static inline normal_result normal_hooke_force(const contact *k, const pair_coeffs *c,
-                                               const contact_models *m, double *restrict h)
+static inline dem_normal_result normal_hooke_force(const dem_contact *k, const dem_pair_coeffs *c,
+                                               const dem_contact_models *m, double *restrict h)
 {
     const double kn = hooke_stiffness(c, m, k->r_eff, k->m_eff);
     const double pi_over_log_e = M_PI / c->log_e;   /* e = 1: -inf, gamma_n = 0 */
     const double gamma_n = sqrt(4.0 * k->m_eff * kn / (1.0 + pi_over_log_e * pi_over_log_e));
-    normal_result r;
+    dem_normal_result r;
     r.fn_spring = kn * k->delta;
     r.fn = r.fn_spring - gamma_n * k->vn;
     r.kn = kn;
@@ -41,18 +41,18 @@ static inline normal_result normal_hooke_force(const contact *k, const pair_coef
 }
 
 /* Half period of the undamped linear spring, pi sqrt(m* / kn). */
-static inline double hooke_contact_time(const pair_coeffs *c, const contact_models *m, double r_eff,
+static inline double hooke_contact_time(const dem_pair_coeffs *c, const dem_contact_models *m, double r_eff,
                                         double m_eff, double v)
 {
     return M_PI * sqrt(m_eff / hooke_stiffness(c, m, r_eff, m_eff));
 }
 
-static inline void hooke_read_case(const dict *d, double *values)
+static inline void hooke_read_case(const dem_dict *d, double *values)
 {
-    ((hooke_case *)values)->characteristic_velocity = dem_dict_scalar(d, "characteristicVelocity", 1e-6, 1e4);
+    ((dem_hooke_case *)values)->characteristic_velocity = dem_dict_scalar(d, "characteristicVelocity", 1e-6, 1e4);
 }
 
-static const contact_model normal_hooke_model = {
+static const dem_contact_model normal_hooke_model = {
     .slot = SLOT_NORMAL, .name = "hooke", .read_case = hooke_read_case,
     .contact_time = hooke_contact_time, .contact_time_name = "linear-spring",
 };

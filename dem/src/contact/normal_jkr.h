@@ -24,18 +24,18 @@
 #include "../materials.h"
 #include "normal_hertz.h"
 
-typedef struct jkr_params {
+typedef struct dem_jkr_params {
     double w;   /* work of adhesion [J/m^2] */
-} jkr_params;
+} dem_jkr_params;
 
-static const model_param jkr_param_table[] = {
-    {"workOfAdhesion", "J/m^2", NAN, 0.0, 1e3, offsetof(jkr_params, w)},
+static const dem_model_param jkr_param_table[] = {
+    {"workOfAdhesion", "J/m^2", NAN, 0.0, 1e3, offsetof(dem_jkr_params, w)},
 };
 
 /* The gap at which the neck of a contact with effective radius r_eff breaks [m]. */
-static inline double jkr_reach(const pair_coeffs *c, double r_eff)
+static inline double jkr_reach(const dem_pair_coeffs *c, double r_eff)
 {
-    const double w = MODEL_PARAMS(c, SLOT_NORMAL, jkr_params)->w;
+    const double w = MODEL_PARAMS(c, SLOT_NORMAL, dem_jkr_params)->w;
     return 0.75 * cbrt(M_PI * M_PI * w * w * r_eff / (c->Y_eff * c->Y_eff));
 }
 
@@ -57,17 +57,17 @@ static inline double jkr_contact_radius(double r_eff, double y_eff, double w, do
     return u * u;
 }
 
-static inline normal_result normal_jkr_force(const contact *k, const pair_coeffs *c,
-                                             const contact_models *m, double *restrict h)
+static inline dem_normal_result normal_jkr_force(const dem_contact *k, const dem_pair_coeffs *c,
+                                             const dem_contact_models *m, double *restrict h)
 {
-    normal_result r = {0};
+    dem_normal_result r = {0};
     if (k->delta >= 0.0) h[0] = 1.0;                         /* touching: the neck forms */
     if (h[0] == 0.0) return r;                               /* approaching, not yet touching */
     if (k->delta < -jkr_reach(c, k->r_eff)) {                /* the neck breaks */
         h[0] = 0.0;
         return r;
     }
-    const double w = MODEL_PARAMS(c, SLOT_NORMAL, jkr_params)->w, y = c->Y_eff;
+    const double w = MODEL_PARAMS(c, SLOT_NORMAL, dem_jkr_params)->w, y = c->Y_eff;
     const double a = jkr_contact_radius(k->r_eff, y, w, k->delta), a3 = a * a * a;
     const double gamma_n = hertz_stiffness_damping(c, a, k->m_eff, &r);
     r.fn_spring = 4.0 * y * a3 / (3.0 * k->r_eff) - sqrt(8.0 * M_PI * w * y * a3);
@@ -78,11 +78,11 @@ static inline normal_result normal_jkr_force(const contact *k, const pair_coeffs
 static inline const char *jkr_check(const double *values, const char **key)
 {
     *key = "workOfAdhesion";
-    return ((const jkr_params *)values)->w > 0.0 ? NULL
+    return ((const dem_jkr_params *)values)->w > 0.0 ? NULL
         : "the jkr normal model needs a positive work of adhesion [J/m^2] (use hertz without adhesion)";
 }
 
-static const contact_model normal_jkr_model = {
+static const dem_contact_model normal_jkr_model = {
     .slot = SLOT_NORMAL, .name = "jkr", .history = 1,
     .params = jkr_param_table, .nparams = 1, .check = jkr_check,
     .contact_time = hertz_contact_time, .contact_time_name = "Hertz",

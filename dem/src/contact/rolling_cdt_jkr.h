@@ -19,32 +19,32 @@
 #include "../dict.h"
 #include "../materials.h"
 
-typedef struct cdt_jkr_params {
+typedef struct dem_cdt_jkr_params {
     double work_of_adhesion;      /* W [J/m^2] (eq. 2) */
     double adhesion_hysteresis;   /* eta_adh [-] (eq. 3) */
-} cdt_jkr_params;
+} dem_cdt_jkr_params;
 
-static const model_param cdt_jkr_param_table[] = {
-    {"workOfAdhesion", "J/m^2", NAN, 0.0, 1e3, offsetof(cdt_jkr_params, work_of_adhesion)},
-    {"adhesionHysteresis", "-", NAN, 0.0, 1e3, offsetof(cdt_jkr_params, adhesion_hysteresis)},
+static const dem_model_param cdt_jkr_param_table[] = {
+    {"workOfAdhesion", "J/m^2", NAN, 0.0, 1e3, offsetof(dem_cdt_jkr_params, work_of_adhesion)},
+    {"adhesionHysteresis", "-", NAN, 0.0, 1e3, offsetof(dem_cdt_jkr_params, adhesion_hysteresis)},
 };
 
-typedef struct cdt_jkr_case {
+typedef struct dem_cdt_jkr_case {
     double torsion_torque;   /* 1: keep the normal (torsion) part of the torque (eq. 10) */
-} cdt_jkr_case;
+} dem_cdt_jkr_case;
 
 /* mu_r of a contact with effective radius R* (eq. 2-3). */
-static inline double cdt_jkr_rolling_friction(const pair_coeffs *c, double r_eff)
+static inline double cdt_jkr_rolling_friction(const dem_pair_coeffs *c, double r_eff)
 {
-    const cdt_jkr_params *p = MODEL_PARAMS(c, SLOT_ROLLING, cdt_jkr_params);
+    const dem_cdt_jkr_params *p = MODEL_PARAMS(c, SLOT_ROLLING, dem_cdt_jkr_params);
     const double a0 = cbrt(9.0 * M_PI * p->work_of_adhesion * r_eff * r_eff / (2.0 * c->Y_eff));  /* eq. 2 */
     return M_PI * a0 / (4.0 * r_eff) * p->adhesion_hysteresis;                                     /* eq. 3 */
 }
 
 /* w = omega_i - omega_j (eq. 4; omega_j = 0 for a wall); k->r_eff = R* (eq. 1, R_i for a wall);
  * xi: the rolling displacement history (3 doubles). Returns the torque on i; j gets minus it. */
-static inline void rolling_cdt_jkr_torque(const contact *k, const pair_coeffs *c, const contact_models *m,
-                                          normal_result n, const double w[3], double *restrict xi,
+static inline void rolling_cdt_jkr_torque(const dem_contact *k, const dem_pair_coeffs *c, const dem_contact_models *m,
+                                          dem_normal_result n, const double w[3], double *restrict xi,
                                           double torque_i[3])
 {
     const double *en = k->en, r_eff = k->r_eff;
@@ -55,7 +55,7 @@ static inline void rolling_cdt_jkr_torque(const contact *k, const pair_coeffs *c
     const double w_mag = sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
     const double scale = w_mag > 0.0 ? -m_max / w_mag : 0.0;
     double mr[3] = {scale * w[0], scale * w[1], scale * w[2]};                     /* eq. 9 */
-    if (!MODEL_CASE(m, SLOT_ROLLING, cdt_jkr_case)->torsion_torque) {              /* eq. 10 */
+    if (!MODEL_CASE(m, SLOT_ROLLING, dem_cdt_jkr_case)->torsion_torque) {              /* eq. 10 */
         const double m_n = mr[0] * en[0] + mr[1] * en[1] + mr[2] * en[2];
         for (int d = 0; d < 3; d++) mr[d] -= m_n * en[d];
     }
@@ -65,17 +65,17 @@ static inline void rolling_cdt_jkr_torque(const contact *k, const pair_coeffs *c
 static inline const char *cdt_jkr_check(const double *values, const char **key)
 {
     *key = "workOfAdhesion";
-    return ((const cdt_jkr_params *)values)->work_of_adhesion > 0.0 ? NULL
+    return ((const dem_cdt_jkr_params *)values)->work_of_adhesion > 0.0 ? NULL
         : "cdtJkr takes mu_r from the JKR contact radius (seed 000 eq. 2-3): the work of adhesion "
           "must be positive [J/m^2] (use rolling cdt for a given mu_r)";
 }
 
-static inline void cdt_jkr_read_case(const dict *d, double *values)
+static inline void cdt_jkr_read_case(const dem_dict *d, double *values)
 {
-    ((cdt_jkr_case *)values)->torsion_torque = dem_dict_bool_opt(d, "torsionTorque", 1);
+    ((dem_cdt_jkr_case *)values)->torsion_torque = dem_dict_bool_opt(d, "torsionTorque", 1);
 }
 
-static const contact_model rolling_cdt_jkr_model = {
+static const dem_contact_model rolling_cdt_jkr_model = {
     .slot = SLOT_ROLLING, .name = "cdtJkr", .history = 3, .history_antisymmetric = 3,
     .params = cdt_jkr_param_table, .nparams = 2, .check = cdt_jkr_check, .read_case = cdt_jkr_read_case,
 };

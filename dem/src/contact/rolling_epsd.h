@@ -11,21 +11,21 @@
 #include <math.h>
 #include "../materials.h"
 
-typedef struct epsd_params {
+typedef struct dem_epsd_params {
     double mu_r;    /* rolling friction coefficient [-] */
     double eta_r;   /* dashpot, fraction of critical [-] */
-} epsd_params;
+} dem_epsd_params;
 
-static const model_param epsd_param_table[] = {
-    {"rollingFriction", "-", NAN, 0.0, 10.0, offsetof(epsd_params, mu_r)},
-    {"rollingViscousDamping", "-", 0.0, 0.0, 10.0, offsetof(epsd_params, eta_r)},
+static const dem_model_param epsd_param_table[] = {
+    {"rollingFriction", "-", NAN, 0.0, 10.0, offsetof(dem_epsd_params, mu_r)},
+    {"rollingViscousDamping", "-", 0.0, 0.0, 10.0, offsetof(dem_epsd_params, eta_r)},
 };
 
-static inline void rolling_epsd_torque(const contact *k, const pair_coeffs *c, const contact_models *m,
-                                       normal_result n, const double w[3], double *restrict m_spring,
+static inline void rolling_epsd_torque(const dem_contact *k, const dem_pair_coeffs *c, const dem_contact_models *m,
+                                       dem_normal_result n, const double w[3], double *restrict m_spring,
                                        double torque_i[3])
 {
-    const epsd_params *p = MODEL_PARAMS(c, SLOT_ROLLING, epsd_params);
+    const dem_epsd_params *p = MODEL_PARAMS(c, SLOT_ROLLING, dem_epsd_params);
     const double *en = k->en, r_eff = k->r_eff;
     const double w_n = w[0] * en[0] + w[1] * en[1] + w[2] * en[2];
     const double wt[3] = {w[0] - w_n * en[0], w[1] - w_n * en[1], w[2] - w_n * en[2]};
@@ -51,7 +51,7 @@ static inline void rolling_epsd_torque(const contact *k, const pair_coeffs *c, c
     for (int d = 0; d < 3; d++) torque_i[d] = -mr[d];
 }
 
-static const contact_model rolling_epsd_model = {
+static const dem_contact_model rolling_epsd_model = {
     .slot = SLOT_ROLLING, .name = "epsd", .history = 3, .history_antisymmetric = 3,
     .params = epsd_param_table, .nparams = 2,
 };

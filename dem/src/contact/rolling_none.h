@@ -4,13 +4,13 @@
 
 #include "../materials.h"
 
-static inline void rolling_none_torque(const contact *k, const pair_coeffs *c, const contact_models *m,
-                                       normal_result n, const double w[3], double *restrict h,
+static inline void rolling_none_torque(const dem_contact *k, const dem_pair_coeffs *c, const dem_contact_models *m,
+                                       dem_normal_result n, const double w[3], double *restrict h,
                                        double torque_i[3])
 {
     torque_i[0] = torque_i[1] = torque_i[2] = 0.0;
 }
 
-static const contact_model rolling_none_model = {.slot = SLOT_ROLLING, .name = "none"};
+static const dem_contact_model rolling_none_model = {.slot = SLOT_ROLLING, .name = "none"};
 
 #endif

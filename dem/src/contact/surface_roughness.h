@@ -39,15 +39,15 @@
 #include "model.h"
 
 /* Distribution of the scatter angle Delta Gamma. */
-enum scatter_distribution { SCATTER_NORMAL, SCATTER_UNIFORM };
+enum dem_scatter_distribution { SCATTER_NORMAL, SCATTER_UNIFORM };
 
-typedef struct roughness_case {
+typedef struct dem_roughness_case {
     double distribution; /* enum scatter_distribution */
     double std_dev;      /* normal: Delta Gamma ~ N(0, std_dev) [rad] ... */
     double max;          /* ... truncated to |Delta Gamma| <= max; uniform: U(0, max) [rad] */
     double seed;         /* key of the counter-based generator (an integer < 2^31) */
-} roughness_case;
-_Static_assert(sizeof(roughness_case) <= MODEL_VALUES * sizeof(double), "roughness_case too large");
+} dem_roughness_case;
+_Static_assert(sizeof(dem_roughness_case) <= MODEL_VALUES * sizeof(double), "roughness_case too large");
 
 static inline uint64_t roughness_mix(uint64_t z)
 {
@@ -64,7 +64,7 @@ static inline double roughness_uniform(uint64_t key, uint64_t k)
 
 /* Draw the angles of a new contact. a < b: the ids (a wall is id ~k); n_ref: the normal
  * oriented from b to a. Fills h = {cos dG, dR}. */
-static inline void roughness_start(const roughness_case *rp, uint64_t a, uint64_t b, long step,
+static inline void roughness_start(const dem_roughness_case *rp, uint64_t a, uint64_t b, long step,
                                    const double n_ref[3], double *restrict h)
 {
     uint64_t key = roughness_mix((uint64_t)rp->seed + 0x9e3779b97f4a7c15ULL);
@@ -94,7 +94,7 @@ static inline void roughness_start(const roughness_case *rp, uint64_t a, uint64_
 
 /* Draw at the start of a contact or when the contact has slid past its asperity (radius a);
  * then add this step's sliding, |v_t| dt, v_t the contact points' relative tangential velocity. */
-static inline void roughness_update(const roughness_case *rp, uint64_t a, uint64_t b, long step,
+static inline void roughness_update(const dem_roughness_case *rp, uint64_t a, uint64_t b, long step,
                                     const double n_ref[3], double contact_radius, double slide_speed,
                                     double dt, double *restrict h)
 {
@@ -115,10 +115,10 @@ static inline void roughness_normal(const double *restrict h, const double n[3],
 }
 
 /* The normal the forces use: drawn or redrawn (roughness_update), then tilted (eq. 12). */
-static inline void surface_roughness_normal(const contact *k, const contact_models *m, double *restrict h,
+static inline void surface_roughness_normal(const dem_contact *k, const dem_contact_models *m, double *restrict h,
                                             double en_f[3])
 {
-    const roughness_case *rp = MODEL_CASE(m, SLOT_SURFACE, roughness_case);
+    const dem_roughness_case *rp = MODEL_CASE(m, SLOT_SURFACE, dem_roughness_case);
     const double *en = k->en, sign = k->sign;
     const double n_ref[3] = {sign * en[0], sign * en[1], sign * en[2]};
     const double wr[3] = {k->lever_i * k->wi[0] + k->lever_j * k->wj[0], k->lever_i * k->wi[1] + k->lever_j * k->wj[1],
@@ -132,7 +132,7 @@ static inline void surface_roughness_normal(const contact *k, const contact_mode
 }
 
 /* eq. 17 at a wall: the rough contact fails to hold the particle (v: its velocity). */
-static inline void surface_roughness_wall_guard(const contact_models *m, const double en[3], const double f[3],
+static inline void surface_roughness_wall_guard(const dem_contact_models *m, const double en[3], const double f[3],
                                                 double v[3])
 {
     const double v_plane = v[0] * en[0] + v[1] * en[1] + v[2] * en[2];
@@ -140,11 +140,11 @@ static inline void surface_roughness_wall_guard(const contact_models *m, const d
         for (int q = 0; q < 3; q++) v[q] -= 2.0 * v_plane * en[q];
 }
 
-static inline void roughness_read_case(const dict *contact_models_dict, double *values)
+static inline void roughness_read_case(const dem_dict *contact_models_dict, double *values)
 {
-    const dict *r = dem_dict_sub(contact_models_dict, "roughness");
+    const dem_dict *r = dem_dict_sub(contact_models_dict, "roughness");
     static const char *const dists[] = {"normal", "uniform", 0};
-    roughness_case *rp = (roughness_case *)values;
+    dem_roughness_case *rp = (dem_roughness_case *)values;
     rp->distribution = dem_dict_choice(r, "distribution", dists);
     /* angles in radians; |Delta Gamma| < pi/2 keeps the rotated normal out of the contact */
     if (rp->distribution == (double)SCATTER_NORMAL) {
@@ -156,7 +156,7 @@ static inline void roughness_read_case(const dict *contact_models_dict, double *
     rp->seed = (double)dem_dict_label_opt(r, "seed", 1, 0, 2147483647L);
 }
 
-static const contact_model surface_roughness_model = {
+static const dem_contact_model surface_roughness_model = {
     .slot = SLOT_SURFACE, .name = "roughness", .history = 6, .needs_contact_radius = 1,
     .read_case = roughness_read_case,
 };

@@ -17,7 +17,7 @@
 #include <math.h>
 #include "../materials.h"
 
-static inline void tangential_history_force(const contact *k, const pair_coeffs *c, normal_result n,
+static inline void tangential_history_force(const dem_contact *k, const dem_pair_coeffs *c, dem_normal_result n,
                                             const double en[3], const double vt[3], double *restrict s,
                                             double ft[3])
 {
@@ -44,7 +44,7 @@ static inline void tangential_history_force(const contact *k, const pair_coeffs 
     }
 }
 
-static const contact_model tangential_history_model = {
+static const dem_contact_model tangential_history_model = {
     .slot = SLOT_TANGENTIAL, .name = "history", .history = 3, .history_antisymmetric = 3,
 };
 
