@@ -7,6 +7,7 @@ random loose packing (0.55) and random close packing (0.64); a column 16 diamete
 lower fraction near its wall, so the bed average sits in the lower half of that range.
 Checks: phi in [0.55, 0.64]; the bed at rest (kinetic energy per particle below 1e-3 of
 m g d); no particle lost. Exits non-zero on any FAIL."""
+import os
 import sys
 
 import h5py
@@ -15,6 +16,9 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 from matplotlib.collections import EllipseCollection
 import numpy as np
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
+import foamcase as fc  # noqa: E402
 
 
 def cap_volume(r, h):
@@ -51,19 +55,11 @@ def main(path, png):
     ke_scale = np.mean(mass) * g * 2.0 * np.mean(r)
     steel_height = np.mean(x[kind == 1, 2]) / np.mean(x[kind == 0, 2])
 
-    failed = 0
-
-    def check(name, measured, lo, hi, unit=""):
-        nonlocal failed
-        ok = lo <= measured <= hi
-        failed += not ok
-        print(f"CHECK {name} measured={measured:.4g}{unit} reference=[{lo:.4g}, {hi:.4g}]{unit} "
-              f"{'PASS' if ok else 'FAIL'}")
-
+    checks = fc.Checks()
     print(f"t = {t:.3g} s: {len(r)} particles, bed height {1000 * h:.1f} mm, solid fraction {phi:.4f}")
-    check("solid_fraction", phi, 0.55, 0.64)
-    check("kinetic_energy_per_particle_over_mgd", ke / ke_scale, 0.0, 1e-3)
-    check("particles_kept", len(r), n0, n0)
+    checks.within("solid_fraction", phi, 0.55, 0.64)
+    checks.within("kinetic_energy_per_particle_over_mgd", ke / ke_scale, 0.0, 1e-3)
+    checks.within("particles_kept", len(r), n0, n0)
     print(f"mean height of steel over mean height of glass: {steel_height:.3f} (no segregation: 1)")
 
     fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(9, 6), gridspec_kw={"width_ratios": [1, 1.2]})
@@ -92,7 +88,7 @@ def main(path, png):
     fig.tight_layout()
     fig.savefig(png, dpi=110)
     print(f"wrote {png}")
-    return 1 if failed else 0
+    return 1 if checks.failed else 0
 
 
 if __name__ == "__main__":

@@ -77,7 +77,7 @@ TOL_BED, TOL_PLATEAU, TOL_UMF, TOL_FREE, TOL_MOMENTUM, TOL_LAYER = 5.0, 3.0, 10.
 
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
-from foamcase import NUM, internal_field, scalar, vector  # noqa: E402
+from foamcase import NUM, Checks, internal_field, scalar, vector  # noqa: E402
 from foamcase import read_dict as read  # noqa: E402
 
 
@@ -261,16 +261,7 @@ def bed_states(run, c):
     return np.array(out)
 
 
-failed = 0
-
-
-def check(name, measured, reference, tol):
-    global failed
-    err = 100.0 * abs(measured - reference) / abs(reference)
-    ok = bool(np.isfinite(measured) and err <= tol)
-    failed += not ok
-    print(f"CHECK {name} measured={measured:.6g} reference={reference:.6g} error={err:.3f} "
-          f"tolerance={tol:g} {'PASS' if ok else 'FAIL'}")
+checks = Checks()
 
 
 def info(name, text):
@@ -278,7 +269,6 @@ def info(name, text):
 
 
 def analyse(run):
-    global failed
     c = case_parameters(run)
     name = os.path.basename(os.path.normpath(run))
     law = LAWS.get(c["law"])
@@ -310,12 +300,10 @@ def analyse(run):
     k = float((dP[sel] * ref).sum() / (ref * ref).sum())
     u_mid = 0.5 * umf_ref
     ref_mid = law(u_mid, e0, c) * L0
-    check(f"{name}_bed", k * ref_mid, ref_mid, TOL_BED)
+    checks.relative(f"{name}_bed", k * ref_mid, ref_mid, TOL_BED)
     dev = np.abs(dP[sel] / ref - 1.0)
     j = int(np.argmax(dev))
-    print(f"CHECK {name}_bed_curve measured={dev[j]:.6g} reference=0 error={100 * dev[j]:.3f} "
-          f"tolerance={TOL_BED:g} {'PASS' if 100 * dev[j] <= TOL_BED else 'FAIL'}")
-    failed += not 100 * dev[j] <= TOL_BED
+    checks.deviation(f"{name}_bed_curve", dev[j], TOL_BED)
 
     # plateau: all fluidised points, less the rate of change of the bed's momentum over them
     # (the time-averaged momentum balance of the particles: dP A = W A + M dv/dt - floor force)
@@ -327,51 +315,39 @@ def analyse(run):
     momentum = M * (v2 - v1) / (c["area"] * (t2 - t1))
     raw = float(dP[fl].mean())
     plateau = raw - momentum
-    check(f"{name}_plateau", plateau, W, TOL_PLATEAU)
+    checks.relative(f"{name}_plateau", plateau, W, TOL_PLATEAU)
 
     # U_mf: the fitted packed branch meets the plateau
     A = np.vstack([U[sel], U[sel] ** 2]).T
     a, b = np.linalg.lstsq(A, dP[sel], rcond=None)[0]
     umf = (-a + np.sqrt(a * a + 4 * b * plateau)) / (2 * b) if b > 0 else plateau / a
-    check(f"{name}_umf", umf, umf_ref, TOL_UMF)
+    checks.relative(f"{name}_umf", umf, umf_ref, TOL_UMF)
 
     # the particle-free fluid on the packed branch: uniform flow
     ff = free_fluid_deviation(run, t[sel][0], t[sel][-1])
     if ff is None:
-        print(f"CHECK {name}_free_fluid measured=nan reference=0 error=nan tolerance={TOL_FREE:g} FAIL "
-              f"(no fields written between {t[sel][0]:.3f} and {t[sel][-1]:.3f} s)")
-        failed += 1
+        checks.missing(f"{name}_free_fluid", f"no fields written between {t[sel][0]:.3f} and {t[sel][-1]:.3f} s")
     else:
         tw, dev_free, nfree = ff
-        ok = 100 * dev_free <= TOL_FREE
-        failed += not ok
-        print(f"CHECK {name}_free_fluid measured={dev_free:.6g} reference=0 error={100 * dev_free:.3f} "
-              f"tolerance={TOL_FREE:g} {'PASS' if ok else 'FAIL'}")
+        checks.deviation(f"{name}_free_fluid", dev_free, TOL_FREE)
 
     # layer by layer in the packed bed: the pressure profile against each layer's drag by the law
     # with the layer's voidage (the face form keeps the drag of the bed's end layers too)
     packed = rising & (U >= BRANCH[0] * umf_ref) & (U <= 0.9 * umf_ref)
     lay = layer_profile(run, t[packed][0], t[packed][-1], c, gidaspow if law is ergun else law)
     if lay is None:
-        print(f"CHECK {name}_layers measured=nan reference=0 error=nan tolerance={TOL_LAYER:g} FAIL "
-              f"(no fields written between {t[sel][0]:.3f} and {t[sel][-1]:.3f} s)")
-        failed += 1
+        checks.missing(f"{name}_layers", f"no fields written between {t[sel][0]:.3f} and {t[sel][-1]:.3f} s")
     else:
         tw, dev_l, nl, zl = lay
-        ok = 100 * dev_l <= TOL_LAYER
-        failed += not ok
-        print(f"CHECK {name}_layers measured={dev_l:.6g} reference=0 error={100 * dev_l:.3f} "
-              f"tolerance={TOL_LAYER:g} {'PASS' if ok else 'FAIL'} (t = {tw:g} s, {nl} bed layers, worst at z = {1e3 * zl:.2f} mm)")
+        checks.deviation(f"{name}_layers", dev_l, TOL_LAYER,
+                         f"t = {tw:g} s, {nl} bed layers, worst at z = {1e3 * zl:.2f} mm")
 
     # the gas momentum balance at every fluid step (the solver's postProcessing/momentumBalance.dat:
     # |residual| / max(|pressure|, |particles|)): the pressure drop is the particles' force plus the
     # gas's weight and acceleration
     mb = np.loadtxt(os.path.join(run, "postProcessing", "momentumBalance.dat"), comments="#", ndmin=2)
     worst = float(np.abs(mb[:, 8]).max())
-    ok = 100 * worst <= TOL_MOMENTUM
-    failed += not ok
-    print(f"CHECK {name}_momentum measured={worst:.6g} reference=0 error={100 * worst:.3f} "
-          f"tolerance={TOL_MOMENTUM:g} {'PASS' if ok else 'FAIL'}")
+    checks.deviation(f"{name}_momentum", worst, TOL_MOMENTUM)
 
     # information
     mu = c["rho_f"] * c["nu"]
@@ -431,7 +407,7 @@ def main(runs):
     fig.tight_layout()
     fig.savefig("ergun.png", dpi=110)
     print("wrote ergun.png")
-    return 1 if failed else 0
+    return 1 if checks.failed else 0
 
 
 if __name__ == "__main__":

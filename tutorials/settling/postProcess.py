@@ -12,11 +12,14 @@ Checks (one CHECK line each; exit 1 on a FAIL):
   curve: max |vz(t) - v_ode(t)| over the run, relative to the terminal velocity, tolerance 2 %.
 Usage: postProcess.py <d> <rho_p> <rho_f> <nu> <g>   (SI units)
 """
+import os
 import sys
 import numpy as np
 import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
+import foamcase as fc  # noqa: E402
 
 d, rho_p, rho_f, nu, g = map(float, sys.argv[1:6])
 mu = rho_f * nu
@@ -37,7 +40,7 @@ for _ in range(200):
     lo, hi = (mid, hi) if accel(mid) > 0 else (lo, mid)
 v_term = 0.5 * (lo + hi)
 
-data = np.loadtxt("postProcessing/particles.dat", comments="#")
+data = fc.table("postProcessing/particles.dat")
 t, vz = data[:, 0], -data[:, 7]
 
 # the ODE on the run's own times (RK4 with a step well below the relaxation time)
@@ -49,23 +52,11 @@ for k in range(len(t_ode) - 1):
     k1 = accel(v); k2 = accel(v + 0.5 * h * k1); k3 = accel(v + 0.5 * h * k2); k4 = accel(v + h * k3)
     v_ode[k + 1] = v + h / 6.0 * (k1 + 2 * k2 + 2 * k3 + k4)
 
-failed = 0
-def check(name, measured, reference, tol_percent):
-    global failed
-    err = 100.0 * abs(measured - reference) / abs(reference)
-    ok = err <= tol_percent and np.isfinite(measured)
-    failed += not ok
-    print(f"CHECK {name} measured={measured:.6g} reference={reference:.6g} error={err:.3f} "
-          f"tolerance={tol_percent:g} {'PASS' if ok else 'FAIL'}")
-
+checks = fc.Checks()
 tail = t >= 0.8 * t[-1]
-check("terminal_velocity", float(np.mean(vz[tail])), v_term, 1.0)
-check("schiller_naumann_reference", v_term, 0.1373, 0.1)
-dev = np.max(np.abs(vz - np.interp(t, t_ode, v_ode))) / v_term
-err = 100.0 * dev
-ok = err <= 2.0
-failed += not ok
-print(f"CHECK velocity_curve measured={dev:.6g} reference=0 error={err:.3f} tolerance=2 {'PASS' if ok else 'FAIL'}")
+checks.relative("terminal_velocity", float(np.mean(vz[tail])), v_term, 1.0)
+checks.relative("schiller_naumann_reference", v_term, 0.1373, 0.1)
+checks.deviation("velocity_curve", np.max(np.abs(vz - np.interp(t, t_ode, v_ode))) / v_term, 2.0)
 
 plt.figure(figsize=(6, 4))
 plt.plot(t_ode, v_ode, "k-", label="Schiller-Naumann ODE")
@@ -75,4 +66,4 @@ plt.xlabel("time [s]"); plt.ylabel("settling velocity [m/s]")
 plt.title(f"settling sphere d = {d*1e6:.0f} um")
 plt.legend(); plt.tight_layout(); plt.savefig("settling.png", dpi=120)
 print("wrote settling.png")
-sys.exit(1 if failed else 0)
+sys.exit(1 if checks.failed else 0)

@@ -6,7 +6,10 @@
   every start time, so that a run continued from a write time reads as one series),
   table (postProcessing/momentumBalance.dat, particles.dat);
 - fields: internal_field (the internal values of an ASCII volField), time_dirs;
-- particles: snapshots (particles.h5: time, position, velocity per snapshot, by id order).
+- particles: snapshots (particles.h5: time, position, velocity per snapshot, by id order);
+- checks: Checks, the CHECK lines every tutorial prints (PASS/FAIL, exit status);
+- the bed measures shared by the bed tutorials (case_bed, bed_pressure_drop, ...).
+Every tutorial's postProcess.py imports this module (sys.path: tutorials/tools).
 """
 import os
 import re
@@ -131,31 +134,48 @@ def snapshot_times(case):
         return sorted(float(g.attrs["time"]) for g in h["snapshots"].values() if g.attrs.get("complete", 0))
 
 
-# --- the fluidised-bed measures shared by the bed tutorials ----------------------------------
+# --- CHECK lines, the same in every tutorial -----------------------------------------------
 class Checks:
-    """CHECK lines (measured, reference, error, tolerance, PASS/FAIL); failed is set on a FAIL."""
+    """CHECK lines (name, measured, reference or limits, PASS/FAIL), one per check; `failed` is
+    set on a FAIL, and a non-finite measured value always fails. Postprocessors end with
+    `sys.exit(1 if checks.failed else 0)`. `note` is appended to the line (where, when)."""
 
     def __init__(self):
         self.failed = False
 
-    def relative(self, name, measured, reference, tolerance_percent):
+    def _line(self, ok, text, note):
+        ok = bool(ok)
+        self.failed |= not ok
+        print(f"CHECK {text} {'PASS' if ok else 'FAIL'}" + (f" ({note})" if note else ""))
+        return ok
+
+    def relative(self, name, measured, reference, tolerance_percent, note=""):
+        """|measured / reference - 1| <= tolerance_percent %."""
         err = 100.0 * abs(measured / reference - 1.0)
-        ok = err <= tolerance_percent
-        self.failed |= not ok
-        print(f"CHECK {name} measured={measured:.6g} reference={reference:.6g} error={err:.3f} "
-              f"tolerance={tolerance_percent} {'PASS' if ok else 'FAIL'}")
+        return self._line(np.isfinite(measured) and err <= tolerance_percent,
+                          f"{name} measured={measured:.6g} reference={reference:.6g} error={err:.3f} "
+                          f"tolerance={tolerance_percent:g}", note)
 
-    def at_most(self, name, measured, limit):
-        ok = measured <= limit
-        self.failed |= not ok
-        print(f"CHECK {name} measured={measured:.6g} limit={limit:g} {'PASS' if ok else 'FAIL'}")
+    def deviation(self, name, fraction, tolerance_percent, note=""):
+        """A relative deviation (a fraction, reference 0) at most tolerance_percent %."""
+        return self._line(np.isfinite(fraction) and 100.0 * fraction <= tolerance_percent,
+                          f"{name} measured={fraction:.6g} reference=0 error={100.0 * fraction:.3f} "
+                          f"tolerance={tolerance_percent:g}", note)
 
-    def within(self, name, measured, lo, hi):
-        ok = lo <= measured <= hi
-        self.failed |= not ok
-        print(f"CHECK {name} measured={measured:.6g} range=[{lo:g}, {hi:g}] {'PASS' if ok else 'FAIL'}")
+    def missing(self, name, why):
+        """A check that could not be evaluated: always a FAIL, with the reason."""
+        return self._line(False, f"{name} measured=nan", why)
+
+    def at_most(self, name, measured, limit, note=""):
+        return self._line(np.isfinite(measured) and measured <= limit,
+                          f"{name} measured={measured:.6g} limit={limit:g}", note)
+
+    def within(self, name, measured, lo, hi, unit="", note=""):
+        return self._line(np.isfinite(measured) and lo <= measured <= hi,
+                          f"{name} measured={measured:.6g}{unit} range=[{lo:g}, {hi:g}]{unit}", note)
 
 
+# --- the fluidised-bed measures shared by the bed tutorials ----------------------------------
 def case_bed(case, material):
     """The bed's parameters from constant/: rho_f, rho_p (of `material`), |g|, the domain's
     cross-section A and height H, the particle volume V_p and count N (first snapshot)."""
