@@ -70,7 +70,11 @@
  *     beta_vol = 18 mu_f alpha phi F / d^2,   beta_p = 3 pi mu_f d alpha F.   Smooth.
  *
  * The functions assume valid inputs (rho_f, mu_f, d > 0, 0 < alpha <= 1, slip >= 0): they run in
- * the per-particle loops; the session checks its parameters once. */
+ * the per-particle loops; the session checks its parameters once.
+ *
+ * One page per law, with its numbered equations, sources and choices: docs/models/
+ * drag_schiller_naumann.md, drag_difelice.md, drag_gidaspow.md, drag_koch_hill.md,
+ * drag_beetstra.md. */
 #ifndef CPL_DRAG_H
 #define CPL_DRAG_H
 

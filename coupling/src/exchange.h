@@ -22,7 +22,8 @@
  *             re-evaluate them with the new fluid field).
  *   explicit: cpl_fluid_forces_eval once (forces frozen), the DEM sub-steps with them, then
  *             cpl_exchange_cells spreads the same frozen forces with the current weights (any
- *             weights summing to 1 conserve them). */
+ *             weights summing to 1 conserve them).
+ * Equations, choices: docs/models/exchange_implicit_explicit.md. */
 #ifndef CPL_EXCHANGE_H
 #define CPL_EXCHANGE_H
 

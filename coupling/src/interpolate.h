@@ -17,7 +17,9 @@
  *               averages are (interior points of uniform meshes). Boundary points average only
  *               the cells there (OpenFOAM uses the boundary values), so it is not linear-exact
  *               next to walls.
- * A direction the neighbours do not span (one cell thick meshes) gets a zero gradient. */
+ * A direction the neighbours do not span (one cell thick meshes) gets a zero gradient.
+ * Equations, sources and choices: docs/models/interpolation_cell.md, interpolation_cellLinear.md,
+ * interpolation_cellPoint.md. */
 #ifndef CPL_INTERPOLATE_H
 #define CPL_INTERPOLATE_H
 

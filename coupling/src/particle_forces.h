@@ -47,7 +47,8 @@
  *   f_equation  force whose reaction is in the fluid equation's own terms [N]
  *               (model A's -V_p grad p; 0 in model B).
  * The fluid's sources then balance beta (u_f - v) + f_exchange exactly (exchange.h), provided
- * u_f at the particle is gathered from the cells with the same weights (cpl_gather_vector). */
+ * u_f at the particle is gathered from the cells with the same weights (cpl_gather_vector).
+ * Equations (numbered), sources and choices: docs/models/forces_modelA_B.md. */
 #ifndef CPL_PARTICLE_FORCES_H
 #define CPL_PARTICLE_FORCES_H
 

@@ -15,7 +15,9 @@
  *             always), normalised to 1 over the cells found: conservative at walls too. For
  *             particles large compared with the cells.
  * alpha_c = max(alpha_min, 1 - Vp_c / V_c); Vp_c [m^3] is the particle volume mapped to cell c.
- * Particles whose centre is outside the mesh get cell -1, no weights, and are counted. */
+ * Particles whose centre is outside the mesh get cell -1, no weights, and are counted.
+ * Equations, sources and choices: docs/models/voidfraction_centre.md, voidfraction_divided.md,
+ * voidfraction_gaussian.md. */
 #ifndef CPL_VOIDFRACTION_H
 #define CPL_VOIDFRACTION_H
 

@@ -83,6 +83,9 @@ Description
 
     Serial only (the C layer holds the whole mesh and all particles).
 
+    The equations of models A and B, numbered, with their sources and choices:
+    docs/models/forces_modelA_B.md (the exchange: docs/models/exchange_implicit_explicit.md).
+
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"

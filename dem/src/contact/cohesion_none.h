@@ -1,4 +1,5 @@
-/* Cohesion model `none`: no attraction beyond what the normal model has. */
+/* Cohesion model `none`: no attraction beyond what the normal model has;
+ * docs/models/cohesion_none.md. */
 #ifndef DEM_COHESION_NONE_H
 #define DEM_COHESION_NONE_H
 

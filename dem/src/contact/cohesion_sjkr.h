@@ -4,7 +4,8 @@
  * a the radius of the circle where the two spheres (or sphere and wall) intersect. It acts only
  * while the bodies overlap and is added after the tangential model, so the Coulomb limit uses
  * the normal model's force alone (as LIGGGHTS). Parameter per interaction:
- * cohesionEnergyDensity k_coh [J/m^3], required (0 switches it off for a pair). */
+ * cohesionEnergyDensity k_coh [J/m^3], required (0 switches it off for a pair). Equations,
+ * sources and choices: docs/models/cohesion_sjkr.md. */
 #ifndef DEM_COHESION_SJKR_H
 #define DEM_COHESION_SJKR_H
 

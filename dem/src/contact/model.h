@@ -118,8 +118,9 @@ static inline void contact_tangential_velocity(const double vr[3], double vn, co
     vt[2] = vr[2] - vn * n_f[2] - (wr[0] * n[1] - wr[1] * n[0]);
 }
 
-/* Squared radius of the circle where two spheres intersect at centre distance d (seed 002,
- * beside eq. 5); a wall is the limit R_j -> infinity, a^2 = 2 R_i delta - delta^2. */
+/* Squared radius of the circle where two spheres intersect at centre distance d
+ * (docs/models/README.md eq. 10; normal_edinburgh.md eq. 5a, written beside seed 002's eq. 5); a
+ * wall is the limit R_j -> infinity, a^2 = 2 R_i delta - delta^2. */
 static inline double contact_radius_sq_pair(double ri, double rj, double d)
 {
     const double q = d * d - rj * rj + ri * ri;

@@ -6,7 +6,7 @@
  * spheres, where the JKR neck does not form). No hysteresis: contact begins and ends at
  * delta = 0. The dashpot and the tangential stiffness are hertz's. limitForce clips the whole
  * normal force at zero, adhesion included. Parameter per interaction: workOfAdhesion W
- * [J/m^2], required, > 0. */
+ * [J/m^2], required, > 0. Equations, sources and choices: docs/models/normal_dmt.md. */
 #ifndef DEM_NORMAL_DMT_H
 #define DEM_NORMAL_DMT_H
 

@@ -1,11 +1,13 @@
 /* Normal model `edinburgh`: elasto-plastic adhesive contact (seed note 002, "Edinburgh normal
- * contact model", eq. 1-9). Loading follows k1 delta^d_ex; unloading leaves that branch at the
- * historic maximum overlap and follows k2 = kappa21 k1 down to the plastic overlap; below it
- * the force turns tensile down to the adhesion branch -k_c delta^c_ex. History: the maximum
- * plastic overlap delta_p,max of the contact (1 double), forgotten when the contact ends.
- * Parameters per interaction: unloadingRatio kappa21 (> 1, required), surfaceEnergy gamma_s
- * [J/m^2] (0), loadingExponent d_ex (1.5), adhesionExponent c_ex (1.5), tensionThreshold F_0 [N]
- * (0); the time-step check shortens the elastic contact time by sqrt(kappa21).
+ * contact model", eq. 1-9). Equations: docs/models/normal_edinburgh.md, which keeps the note's
+ * numbering: "eq. N" in this file is that page's eq. N and seed 002's eq. N. Loading follows
+ * k1 delta^d_ex; unloading leaves that branch at the historic maximum overlap and follows
+ * k2 = kappa21 k1 down to the plastic overlap; below it the force turns tensile down to the
+ * adhesion branch -k_c delta^c_ex. History: the maximum plastic overlap delta_p,max of the
+ * contact (1 double), forgotten when the contact ends. Parameters per interaction:
+ * unloadingRatio kappa21 (> 1, required), surfaceEnergy gamma_s [J/m^2] (0), loadingExponent d_ex
+ * (1.5), adhesionExponent c_ex (1.5), tensionThreshold F_0 [N] (0); the time-step check shortens
+ * the elastic contact time by sqrt(kappa21).
  *
  * Choices where the note is open:
  *  - eq. 8 calls e_log the common logarithm of the restitution; we use the natural one, the only
@@ -24,12 +26,12 @@
 
 /* Parameters per interaction (keys in edinburgh_param_table), then the derived lambda. */
 typedef struct dem_edinburgh_params {
-    double kappa21;     /* k2/k1 > 1 [-] (eq. 1) */
-    double gamma_s;     /* surface energy [J/m^2] (eq. 5) */
-    double d_ex;        /* loading exponent >= 1 [-] (eq. 2) */
-    double c_ex;        /* adhesion exponent > 0 [-] (eq. 2) */
-    double f0;          /* tension threshold F_0 [N] (eq. 9) */
-    double lambda;      /* (1 - 1/kappa21)^(1/d_ex) (eq. 3), derived */
+    double kappa21;     /* k2/k1 > 1 [-] (normal_edinburgh.md eq. 1) */
+    double gamma_s;     /* surface energy [J/m^2] (normal_edinburgh.md eq. 5) */
+    double d_ex;        /* loading exponent >= 1 [-] (normal_edinburgh.md eq. 2) */
+    double c_ex;        /* adhesion exponent > 0 [-] (normal_edinburgh.md eq. 2) */
+    double f0;          /* tension threshold F_0 [N] (normal_edinburgh.md eq. 9) */
+    double lambda;      /* (1 - 1/kappa21)^(1/d_ex) (normal_edinburgh.md eq. 3), derived */
 } dem_edinburgh_params;
 _Static_assert(sizeof(dem_edinburgh_params) <= MODEL_VALUES * sizeof(double), "edinburgh_params too large");
 
@@ -41,46 +43,46 @@ static const dem_model_param edinburgh_param_table[] = {
     {"tensionThreshold", "N", 0.0, -1e6, 1e6, offsetof(dem_edinburgh_params, f0)},
 };
 
-/* k1 of eq. 1: 2 Y* R* for a linear loading branch, 4/3 Y* sqrt(R*) otherwise */
+/* k1 of normal_edinburgh.md eq. 1: 2 Y* R* for a linear loading branch, 4/3 Y* sqrt(R*) otherwise */
 static inline double edinburgh_k1(const dem_pair_coeffs *c, const dem_edinburgh_params *p, double r_eff)
 {
     return p->d_ex == 1.0 ? 2.0 * c->Y_eff * r_eff : 4.0 / 3.0 * c->Y_eff * sqrt(r_eff);
 }
 
-/* k->a2: the contact radius squared (eq. 5); h: delta_p,max (1 double). */
+/* k->a2: the contact radius squared (normal_edinburgh.md eq. 5a); h: delta_p,max (1 double). */
 static inline dem_normal_result normal_edinburgh_force(const dem_contact *k, const dem_pair_coeffs *c,
                                                    const dem_contact_models *m, double *restrict h)
 {
     const dem_edinburgh_params *p = MODEL_PARAMS(c, SLOT_NORMAL, dem_edinburgh_params);
     const double delta = k->delta, a = sqrt(k->a2);
-    const double d_ex = p->d_ex, c_ex = p->c_ex, xi = 1.0 / d_ex;                       /* eq. 2 */
-    const double k1 = edinburgh_k1(c, p, k->r_eff);                                     /* eq. 1 */
-    const double k2 = k1 * p->kappa21;                                                  /* eq. 1 */
-    const double delta_d = pow(delta, d_ex), delta_c = pow(delta, c_ex);                /* eq. 2 */
-    const double delta_p = p->lambda * delta;                                           /* eq. 3 */
-    const double delta_pmax = h[0] > delta_p ? h[0] : delta_p;                          /* eq. 3 */
+    const double d_ex = p->d_ex, c_ex = p->c_ex, xi = 1.0 / d_ex;                       /* normal_edinburgh.md eq. 2 */
+    const double k1 = edinburgh_k1(c, p, k->r_eff);                                     /* normal_edinburgh.md eq. 1 */
+    const double k2 = k1 * p->kappa21;                                                  /* normal_edinburgh.md eq. 1 */
+    const double delta_d = pow(delta, d_ex), delta_c = pow(delta, c_ex);                /* normal_edinburgh.md eq. 2 */
+    const double delta_p = p->lambda * delta;                                           /* normal_edinburgh.md eq. 3 */
+    const double delta_pmax = h[0] > delta_p ? h[0] : delta_p;                          /* normal_edinburgh.md eq. 3 */
     h[0] = delta_pmax;
-    const double delta_pmax_d = pow(delta_pmax, d_ex);                                  /* eq. 4 */
-    const double f_tmp = k2 * (delta_d - delta_pmax_d);                                 /* eq. 4 */
+    const double delta_pmax_d = pow(delta_pmax, d_ex);                                  /* normal_edinburgh.md eq. 4 */
+    const double f_tmp = k2 * (delta_d - delta_pmax_d);                                 /* normal_edinburgh.md eq. 4 */
 
-    double f_min = 1.5 * M_PI * p->gamma_s * a;                                         /* eq. 5 */
+    double f_min = 1.5 * M_PI * p->gamma_s * a;                                         /* normal_edinburgh.md eq. 5 */
     double delta_min;
-    if (f_min > 0.5 * k2 * delta_pmax_d) {                                              /* eq. 6, limit */
+    if (f_min > 0.5 * k2 * delta_pmax_d) {                                              /* normal_edinburgh.md eq. 6, limit */
         f_min = 0.5 * k2 * delta_pmax_d;
         delta_min = 0.5 * delta_pmax;
     } else {
-        delta_min = pow(delta_pmax_d - f_min / k2, xi);                                 /* eq. 6 */
+        delta_min = pow(delta_pmax_d - f_min / k2, xi);                                 /* normal_edinburgh.md eq. 6 */
     }
-    const double k_c = delta_min > 0.0 ? f_min / pow(delta_min, c_ex) : 0.0;            /* eq. 6 */
+    const double k_c = delta_min > 0.0 ? f_min / pow(delta_min, c_ex) : 0.0;            /* normal_edinburgh.md eq. 6 */
 
     const double f_load = k1 * delta_d, f_adh = -k_c * delta_c;
-    const double f_el = f_tmp >= f_load ? f_load : (f_tmp > f_adh ? f_tmp : f_adh);     /* eq. 7 */
+    const double f_el = f_tmp >= f_load ? f_load : (f_tmp > f_adh ? f_tmp : f_adh);     /* normal_edinburgh.md eq. 7 */
 
     const double pi_over_log_e = M_PI / c->log_e;                       /* e = 1: -inf, gamma 0 */
-    const double gamma_n = sqrt(4.0 * k->m_eff * k1 / (1.0 + pi_over_log_e * pi_over_log_e));  /* eq. 8 */
+    const double gamma_n = sqrt(4.0 * k->m_eff * k1 / (1.0 + pi_over_log_e * pi_over_log_e));  /* normal_edinburgh.md eq. 8 */
 
     dem_normal_result r;
-    r.fn = f_el - gamma_n * k->vn + p->f0;                                              /* eq. 8, 9 */
+    r.fn = f_el - gamma_n * k->vn + p->f0;                                              /* normal_edinburgh.md eq. 8, 9 */
     r.kn = k1 * d_ex * (delta > 0.0 ? delta_d / delta : 0.0);
     r.fn_spring = f_el;
     r.kt = 8.0 * c->G_eff * sqrt(k->r_eff * delta);
@@ -89,8 +91,9 @@ static inline dem_normal_result normal_edinburgh_force(const dem_contact *k, con
     return r;
 }
 
-/* Elastic impact on F = k1 delta^d (eq. 1), 2 (delta_max / v) int_0^1 dx / sqrt(1 - x^(d+1)),
- * shortened by sqrt(kappa21) for the stiffer unloading branch. */
+/* Elastic impact on F = k1 delta^d (normal_edinburgh.md eq. 1), 2 (delta_max / v) int_0^1 dx /
+ * sqrt(1 - x^(d+1)), shortened by sqrt(kappa21) for the stiffer unloading branch
+ * (normal_edinburgh.md eq. 11). */
 static inline double edinburgh_contact_time(const dem_pair_coeffs *c, const dem_contact_models *m, double r_eff,
                                             double m_eff, double v)
 {
@@ -112,7 +115,7 @@ static inline const char *edinburgh_check(const double *values, const char **key
 static inline void edinburgh_prepare(double *values)
 {
     dem_edinburgh_params *p = (dem_edinburgh_params *)values;
-    p->lambda = pow(1.0 - 1.0 / p->kappa21, 1.0 / p->d_ex);                            /* eq. 3 */
+    p->lambda = pow(1.0 - 1.0 / p->kappa21, 1.0 / p->d_ex);                            /* normal_edinburgh.md eq. 3 */
 }
 
 static const dem_contact_model normal_edinburgh_model = {

@@ -4,7 +4,8 @@
  *   gamma_n = -2 sqrt(5/6) beta sqrt(2 Y* sqrt(R* d) m*),  gamma_t likewise with kt,
  *   Fn = kn d - gamma_n vn          (vn < 0 while approaching),
  * and with limitForce Fn >= 0. Parameters: the interaction's restitution e
- * (beta = ln e / sqrt(ln^2 e + pi^2)); no history. */
+ * (beta = ln e / sqrt(ln^2 e + pi^2)); no history. Equations, sources and choices:
+ * docs/models/normal_hertz.md. */
 #ifndef DEM_NORMAL_HERTZ_H
 #define DEM_NORMAL_HERTZ_H
 

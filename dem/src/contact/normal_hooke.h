@@ -1,10 +1,12 @@
 /* Normal model `hooke`: linear spring-dashpot with LIGGGHTS' stiffness from a characteristic
- * velocity V (the Hertz peak overlap at V gives the same peak force):
+ * velocity V (the spring stops an impact at V at the Hertz peak overlap; its peak force is then
+ * 4/5 of Hertz's):
  *   kn = 16/15 sqrt(R*) Y* (15 m* V^2 / (16 sqrt(R*) Y*))^(1/5),  kt = kn,
  *   gamma_n = sqrt(4 m* kn / (1 + (pi / ln e)^2)),  gamma_t = gamma_n,
  *   Fn = kn d - gamma_n vn, and with limitForce Fn >= 0.
  * For the linear oscillator this damping gives exactly restitution e when the contact ends at
- * zero overlap. Case-wide setting in contactModels: characteristicVelocity V [m/s], required. */
+ * zero overlap. Case-wide setting in contactModels: characteristicVelocity V [m/s], required.
+ * Equations, sources and choices: docs/models/normal_hooke.md. */
 #ifndef DEM_NORMAL_HOOKE_H
 #define DEM_NORMAL_HOOKE_H
 

@@ -16,7 +16,8 @@
  * radius (kt = 8 G* a, kn = 4/3 Y* a); the exact dF/d delta diverges where the neck breaks.
  * limitForce clips the whole normal force at zero, adhesion included. The time-step check uses
  * the Hertz contact time (adhesion lengthens the contact).
- * Parameter per interaction: workOfAdhesion W [J/m^2], required, > 0. */
+ * Parameter per interaction: workOfAdhesion W [J/m^2], required, > 0. Equations, sources and
+ * choices: docs/models/normal_jkr.md. */
 #ifndef DEM_NORMAL_JKR_H
 #define DEM_NORMAL_JKR_H
 

@@ -1,7 +1,8 @@
 /* Rolling model `cdt` (constant directional torque, as LIGGGHTS' rolling cdt):
  *   M = mu_r (kn delta) R_lever w/|w|,  w = omega_i - omega_j,  minus its normal (torsion) part;
  * torque -M on i and +M on j. R_lever is R* for a pair and the contact radius R_i - delta/2
- * for a wall (as LIGGGHTS). Parameter per interaction: rollingFriction mu_r, required. */
+ * for a wall (as LIGGGHTS). Parameter per interaction: rollingFriction mu_r, required.
+ * Equations, sources and choices: docs/models/rolling_cdt.md. */
 #ifndef DEM_ROLLING_CDT_H
 #define DEM_ROLLING_CDT_H
 

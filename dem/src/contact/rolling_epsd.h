@@ -4,7 +4,8 @@
  *   M = M_spring + eta_r 2 sqrt(I_r kr) w_t   otherwise,
  * I_r = 1.4 m_i R_i^2 for a wall, 1.4 (m_i R_i^2)(m_j R_j^2)/(m_i R_i^2 + m_j R_j^2) for a pair;
  * torque -M on i and +M on j. History: M_spring (3 doubles, antisymmetric). Parameters per
- * interaction: rollingFriction mu_r (required), rollingViscousDamping eta_r (0). */
+ * interaction: rollingFriction mu_r (required), rollingViscousDamping eta_r (0). Equations,
+ * sources and choices: docs/models/rolling_epsd.md. */
 #ifndef DEM_ROLLING_EPSD_H
 #define DEM_ROLLING_EPSD_H
 

@@ -1,4 +1,4 @@
-/* Rolling model `none`: no rolling resistance. */
+/* Rolling model `none`: no rolling resistance; docs/models/rolling_none.md. */
 #ifndef DEM_ROLLING_NONE_H
 #define DEM_ROLLING_NONE_H
 

@@ -1,4 +1,5 @@
-/* Surface model `default`: smooth spheres; the forces act along the line of centres. */
+/* Surface model `default`: smooth spheres; the forces act along the line of centres;
+ * docs/models/surface_default.md. */
 #ifndef DEM_SURFACE_DEFAULT_H
 #define DEM_SURFACE_DEFAULT_H
 

@@ -1,13 +1,15 @@
-/* Surface model `roughness` (seed note 001, eq. 1-17): the contact normal is rotated by a random
- * scatter angle Delta Gamma about a random azimuth psi (eq. 11-12), and the normal and
- * tangential models work with the rotated normal n'. The angles are drawn once, when the
- * contact starts, from a counter-based generator keyed on the seed, the two particle ids (or
- * particle id and wall index) and the start step, so a run is reproducible and independent of
- * particle order. History (6 doubles): cos Delta Gamma, the offset dR of eq. 11 in space, the
- * distance the contact points have slid since the draw, and the largest contact radius since.
+/* Surface model `roughness` (seed note 001, eq. 1-17; equations: docs/models/surface_roughness.md,
+ * which keeps the note's numbering: "eq. N" in this file is that page's eq. N and seed 001's
+ * eq. N): the contact normal is rotated by a random scatter angle Delta Gamma about a random
+ * azimuth psi (eq. 11-12), and the normal and tangential models work with the rotated normal n'.
+ * The angles are drawn once, when the contact starts, from a counter-based generator keyed on the
+ * seed, the two particle ids (or particle id and wall index) and the start step, so a run is
+ * reproducible and independent of particle order. History (6 doubles): cos Delta Gamma, the
+ * offset dR of eq. 11 in space, the distance the contact points have slid since the draw, and the
+ * largest contact radius since.
  *
  * Choices where the note is open:
- *  - dR is drawn in the frame of the normal oriented from the lower to the higher particle id,
+ *  - dR is drawn in the frame of the normal oriented from the higher to the lower particle id,
  *    and n' = cos(dG) n + s dR with s = +1 or -1 for the particle seen (eq. 12; "the sign
  *    reverses for a particle pair"), so i and j feel equal and opposite forces. While the
  *    contact lasts dR is projected on the current tangent plane (n turns a little).
@@ -62,8 +64,8 @@ static inline double roughness_uniform(uint64_t key, uint64_t k)
     return (double)(roughness_mix(key + (k + 1) * 0x9e3779b97f4a7c15ULL) >> 11) * 0x1.0p-53;
 }
 
-/* Draw the angles of a new contact. a < b: the ids (a wall is id ~k); n_ref: the normal
- * oriented from b to a. Fills h = {cos dG, dR}. */
+/* Draw the angles of a new contact (surface_roughness.md eq. 18). a < b: the ids (a wall is id
+ * ~k); n_ref: the normal oriented from b to a. Fills h = {cos dG, dR}. */
 static inline void roughness_start(const dem_roughness_case *rp, uint64_t a, uint64_t b, long step,
                                    const double n_ref[3], double *restrict h)
 {
@@ -89,11 +91,12 @@ static inline void roughness_start(const dem_roughness_case *rp, uint64_t a, uin
     const double n2[3] = {q, sgn + n_ref[1] * n_ref[1] * p, -n_ref[1]};
     const double sin_dg = sin(dg), s1 = sin_dg * sin(psi), s2 = sin_dg * cos(psi);
     h[0] = cos(dg);
-    for (int d = 0; d < 3; d++) h[1 + d] = s1 * n1[d] + s2 * n2[d];            /* eq. 11 */
+    for (int d = 0; d < 3; d++) h[1 + d] = s1 * n1[d] + s2 * n2[d];            /* surface_roughness.md eq. 11 */
 }
 
-/* Draw at the start of a contact or when the contact has slid past its asperity (radius a);
- * then add this step's sliding, |v_t| dt, v_t the contact points' relative tangential velocity. */
+/* Draw at the start of a contact or when the contact has slid past its asperity (radius a;
+ * surface_roughness.md eq. 19); then add this step's sliding, |v_t| dt, v_t the contact points'
+ * relative tangential velocity. */
 static inline void roughness_update(const dem_roughness_case *rp, uint64_t a, uint64_t b, long step,
                                     const double n_ref[3], double contact_radius, double slide_speed,
                                     double dt, double *restrict h)
@@ -111,10 +114,11 @@ static inline void roughness_update(const dem_roughness_case *rp, uint64_t a, ui
 static inline void roughness_normal(const double *restrict h, const double n[3], double s, double n_rot[3])
 {
     const double dr_n = h[1] * n[0] + h[2] * n[1] + h[3] * n[2];
-    for (int d = 0; d < 3; d++) n_rot[d] = h[0] * n[d] + s * (h[1 + d] - dr_n * n[d]);   /* eq. 12 */
+    for (int d = 0; d < 3; d++) n_rot[d] = h[0] * n[d] + s * (h[1 + d] - dr_n * n[d]);   /* surface_roughness.md eq. 12 */
 }
 
-/* The normal the forces use: drawn or redrawn (roughness_update), then tilted (eq. 12). */
+/* The normal the forces use: drawn or redrawn (roughness_update; surface_roughness.md eqs. 18-19),
+ * then tilted (surface_roughness.md eq. 12). */
 static inline void surface_roughness_normal(const dem_contact *k, const dem_contact_models *m, double *restrict h,
                                             double en_f[3])
 {
@@ -131,7 +135,8 @@ static inline void surface_roughness_normal(const dem_contact *k, const dem_cont
     roughness_normal(h, en, sign, en_f);
 }
 
-/* eq. 17 at a wall: the rough contact fails to hold the particle (v: its velocity). */
+/* surface_roughness.md eq. 17 at a wall: the rough contact fails to hold the particle (v: its
+ * velocity). */
 static inline void surface_roughness_wall_guard(const dem_contact_models *m, const double en[3], const double f[3],
                                                 double v[3])
 {

@@ -10,7 +10,8 @@
  * impulse for e = 0.5, vt/vn = 3, see tests/validation/test_oblique.c); here the whole
  * tangential force obeys |Ft| <= mu |Fn|. In sticking contacts the two agree.
  * Parameters: the interaction's friction mu; history: the spring's displacement s (3 doubles,
- * antisymmetric: built from v_i - v_j). */
+ * antisymmetric: built from v_i - v_j). Equations, sources and choices:
+ * docs/models/tangential_history.md. */
 #ifndef DEM_TANGENTIAL_HISTORY_H
 #define DEM_TANGENTIAL_HISTORY_H
 

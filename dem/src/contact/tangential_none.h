@@ -1,4 +1,5 @@
-/* Tangential model `none`: frictionless contacts (no tangential force, no history). */
+/* Tangential model `none`: frictionless contacts (no tangential force, no history);
+ * docs/models/tangential_none.md. */
 #ifndef DEM_TANGENTIAL_NONE_H
 #define DEM_TANGENTIAL_NONE_H
 
