@@ -1,5 +1,5 @@
 /* Rolling model `cdt` (constant directional torque, as LIGGGHTS' rolling cdt):
- *   M = mu_r (kn delta) R_lever w/|w|,  w = omega_i - omega_j,  minus its normal (torsion) part;
+ *   M = mu_r |kn delta| R_lever w/|w|,  w = omega_i - omega_j,  minus its normal (torsion) part;
  * torque -M on i and +M on j. R_lever is R* for a pair and the contact radius R_i - delta/2
  * for a wall (as LIGGGHTS). Parameter per interaction: rollingFriction mu_r, required.
  * Equations, sources and choices: docs/models/rolling_cdt.md. */
@@ -24,7 +24,8 @@ static inline void rolling_cdt_torque(const dem_contact *k, const dem_pair_coeff
     const double *en = k->en;
     const double w_mag = sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
     const double mu_r = MODEL_PARAMS(c, SLOT_ROLLING, dem_cdt_params)->mu_r;
-    const double scale = w_mag > 0.0 ? mu_r * n.fn_spring * k->rolling_lever / w_mag : 0.0;
+    /* |F_el|: under an adhesive normal model F_el can be a pull; the torque still resists */
+    const double scale = w_mag > 0.0 ? mu_r * fabs(n.fn_spring) * k->rolling_lever / w_mag : 0.0;
     double mr[3] = {scale * w[0], scale * w[1], scale * w[2]};
     const double m_n = mr[0] * en[0] + mr[1] * en[1] + mr[2] * en[2];
     for (int d = 0; d < 3; d++) torque_i[d] = -(mr[d] - m_n * en[d]);

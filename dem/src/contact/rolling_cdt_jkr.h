@@ -53,7 +53,7 @@ static inline void rolling_cdt_jkr_torque(const dem_contact *k, const dem_pair_c
     const double *en = k->en, r_eff = k->r_eff;
     const double w_n = w[0] * en[0] + w[1] * en[1] + w[2] * en[2];
     for (int d = 0; d < 3; d++) xi[d] += r_eff * (w[d] - w_n * en[d]) * k->dt;     /* rolling_cdt_jkr.md eq. 5, 6 */
-    const double fn = n.fn_spring;                                                 /* rolling_cdt_jkr.md eq. 7 */
+    const double fn = fabs(n.fn_spring);   /* rolling_cdt_jkr.md eq. 7; |F_el|: a pull (adhesive normal model) still resists */
     const double m_max = cdt_jkr_rolling_friction(c, r_eff) * fn * r_eff;         /* rolling_cdt_jkr.md eq. 8 */
     const double w_mag = sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
     const double scale = w_mag > 0.0 ? -m_max / w_mag : 0.0;
