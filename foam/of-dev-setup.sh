@@ -4,7 +4,7 @@
 #
 #   foam/of-dev-setup.sh [DEST]        default DEST: $OF_DEV_DIR or /opt/of/OpenFOAM-v1912
 #
-# Steps (about 15 s on 2 cores when the tarball is cached, plus the download the first time):
+# Steps (about 60 s on 2 cores when the tarball is cached, plus the download the first time):
 #   1. the upstream orig tarball of the installed source version (openfoam_1912.200626.orig.tar.bz2,
 #      45 MB) is taken from $OF_TARBALL, or from the cache next to DEST, or fetched with
 #      `apt-get source --download-only`. deb-src is enabled only for that call, through a private
@@ -90,7 +90,10 @@ set -eu
 [ "${WM_PROJECT_DIR:-}" = "$DEST" ] || { echo "of-dev-setup: sourcing $DEST/etc/bashrc failed" >&2; exit 1; }
 ( cd "$WM_DIR/src" && ./Allmake > "$DEST/log.wmake-tools" 2>&1 ) ||
     { tail "$DEST/log.wmake-tools" >&2; echo "of-dev-setup: building wmake's tools failed" >&2; exit 1; }
-wmakeLnIncludeAll -j "$(nproc)" "$FOAM_SRC" > "$DEST/log.lnInclude" 2>&1
+# Serially: v1912's `wmakeLnIncludeAll -j` starts its jobs inside a pipeline's subshell, so its
+# final `wait` does not wait for them and it can return while links are still being made (a
+# fresh machine then failed to find fvMesh.H). Serial takes about 50 s, no slower on 2 cores.
+wmakeLnIncludeAll "$FOAM_SRC" > "$DEST/log.lnInclude" 2>&1
 for d in TurbulenceModels/phaseIncompressible TurbulenceModels/phaseCompressible; do
     if [ -d "$FOAM_SRC/$d" ]; then wmakeLnInclude -u "$FOAM_SRC/$d" >> "$DEST/log.lnInclude" 2>&1; fi
 done
