@@ -12,7 +12,7 @@
 #              5e-6 s), from t = 0 to T, one write at the end; its log gives the time split
 #              (DEM, coupling, fluid); then the same with interpolation cellPoint, for the
 #              coupling's cost of cellPoint against cell;
-#   pimpleFoam: the same mesh, fvSchemes and fvSolution (three correctors, no momentum
+#   pimpleFoam: the same mesh, fvSchemes and fvSolution (the same correctors, no momentum
 #              predictor, as the face form), no particles, the inlet at 1.875 m/s, the fluid
 #              deltaT of ours: the cost of a fluid step without particles.
 # Each under /usr/bin/time -f: wall and CPU (user + system) seconds. The machine is shared and

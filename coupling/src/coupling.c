@@ -2,15 +2,24 @@
  * fluid forces on the particles and the fields handed to the fluid.
  *
  * Order within coupling_evolve (the fluid has just solved U, p of the last step):
- *   1. forces: gather u_f, alpha, grad p at the particles (positions unchanged since the last
- *      void-fraction update) and evaluate the drag (particle_forces.h);
+ *   1. the new field: gather u_f (and model A's grad p) at the particles, whose positions are
+ *      unchanged since the last void-fraction update; the drag coefficient beta and the
+ *      exchanged velocity-independent force (model B's buoyancy, explicit drag) stay as the
+ *      fluid received them at the end of the last step (3), so that the particles feel
+ *      beta (u_f - v) with the same beta the fluid's K_sl holds. (Evaluating beta again with
+ *      the new slip made the particles feel more than the fluid received: the drag law grows
+ *      with the slip, and the step-to-step jitter of the centre void fraction's gas velocity
+ *      then biased the product; 2.5 % of the bed's weight in the full fluidisedBed.) The first
+ *      step of a run, or a run continued from a snapshot without them, evaluates everything.
  *   2. couplingInterval DEM steps, each with the fluid force at the particle's current velocity
  *      (implicit: beta (u_f - v); explicit: frozen), held in p->f_ext;
- *   3. void fraction with the new positions; gather, evaluate the forces again with the same
- *      weights and velocities, and spread them onto the cells (exchange.h), so that what the
- *      fluid receives balances what the particles feel to round-off.
+ *   3. void fraction with the new positions; gather, evaluate the forces with the same weights
+ *      and the particles' velocities, and spread them onto the cells (exchange.h): the fluid
+ *      solves with these beta and forces, and the particles feel them in the next step. What
+ *      the fluid receives, sum beta (v - u_f) - f, differs from the particles' mean force over
+ *      the next step only by sum beta (v - <v>), v's change within the step.
  * What a particle keeps across DEM steps (its fluid cell, beta, u_f and the velocity-independent
- * force) lives in the particle table (particles.h), so that it follows the DEM's sorting; the
+ * forces) lives in the particle table (particles.h), so that it follows the DEM's sorting; the
  * per-particle arrays here are rebuilt at each exchange, in the current order. */
 #include <math.h>
 #include <stdio.h>
@@ -58,6 +67,7 @@ struct coupling {
     double dem_seconds, coupling_seconds;
     long outside_reported;
     int restarted;                /* continued from a particle snapshot at t_start > 0 */
+    int exchanged;                /* p->beta, p->f_fluid hold what the fluid received (step 3) */
     double wall_force[3];         /* the walls' force on the particles, mean over the last
                                      fluid step's DEM steps [N] */
     double fluid_force[3];        /* the fluid's force on the particles, the same mean [N] */
@@ -180,11 +190,19 @@ static void evaluate_forces(coupling *c, const double (*U)[3], const double (*gr
     const cpl_particle_fluid in = {p->n, (const double (*)[3])p->v, c->d, c->volume,
                                    (const double (*)[3])c->u_p, (const double (*)[3])c->gp_p, c->alpha_p, p->fluid_cell};
     cpl_fluid_forces_eval(&c->params, &in, &c->forces);
+}
+
+/* Into the particle table (which follows the DEM's sorting): the field's parts (u_f, model A's
+ * -V_p grad p) and, with exchanged_too, the parts the fluid receives (beta, f_exchange). */
+static void store_forces(coupling *c, int exchanged_too)
+{
+    dem_particles *p = &c->s.p;
     for (int i = 0; i < p->n; i++) {
-        p->beta[i] = c->forces.beta[i];
+        if (exchanged_too) p->beta[i] = c->forces.beta[i];
         for (int q = 0; q < 3; q++) {
             p->u_fluid[i][q] = c->forces.u_f[i][q];
-            p->f_fluid[i][q] = c->forces.f_exchange[i][q] + c->forces.f_equation[i][q];
+            p->f_pgrad[i][q] = c->forces.f_equation[i][q];
+            if (exchanged_too) p->f_fluid[i][q] = c->forces.f_exchange[i][q];
         }
     }
 }
@@ -196,7 +214,8 @@ static void apply_fluid_forces(coupling *c)
     dem_particles *p = &c->s.p;
     for (int i = 0; i < p->n; i++) {
         const double b = p->beta[i];
-        for (int q = 0; q < 3; q++) p->f_ext[i][q] = b * (p->u_fluid[i][q] - p->v[i][q]) + p->f_fluid[i][q];
+        for (int q = 0; q < 3; q++)
+            p->f_ext[i][q] = b * (p->u_fluid[i][q] - p->v[i][q]) + p->f_fluid[i][q] + p->f_pgrad[i][q];
     }
 }
 
@@ -303,6 +322,7 @@ static void setup_particles(coupling *c, const char *case_dir, double t_start)
                       "run starts at t = 0, or continues from a write time: its fields and its particle "
                       "snapshot)", base, t_start);
         c->s.time = t_start;   /* the fluid's time name, exactly */
+        c->exchanged = saved.coupling_read;   /* what the fluid of t_start received */
         const int dropped = dem_io_drop_snapshots_after(base, t_start);
         dem_info("coupling: continuing from %s.h5 at t = %g s (DEM step %ld), %d particles%s", base, c->s.time,
                  c->s.step, c->s.p.n, dropped ? "; later snapshots dropped" : "");
@@ -367,6 +387,7 @@ void coupling_evolve(coupling *c, const double (*U)[3], const double (*grad_p)[3
 {
     double t0 = now();
     evaluate_forces(c, U, grad_p, 1, 0);               /* 1 */
+    store_forces(c, !c->exchanged);
     double t1 = now();
     c->coupling_seconds += t1 - t0;
     double fw[3] = {0.0, 0.0, 0.0}, ff[3] = {0.0, 0.0, 0.0};
@@ -388,6 +409,8 @@ void coupling_evolve(coupling *c, const double (*U)[3], const double (*grad_p)[3
     const cpl_cell_weights w = weights_of(c);
     cpl_exchange_cells(&w, &c->forces, (const double (*)[3])c->s.p.v, c->mesh.ncells, c->mesh.cell_volume,
                        c->ksl, c->up, c->source);
+    store_forces(c, 1);
+    c->exchanged = 1;
     write_means(c);
     c->coupling_seconds += now() - t2;
 }

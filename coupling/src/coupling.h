@@ -6,8 +6,9 @@
  *                                                         constant/couplingProperties
  *   each fluid step:
  *     coupling_evolve(c, U, grad_p)    couplingInterval DEM steps with the drag of the current
- *                                      fluid field (implicit: re-evaluated with each particle's
- *                                      current velocity), then void fraction, K_sl and sources
+ *                                      fluid field and the drag coefficients of the last exchange
+ *                                      (implicit: at each particle's current velocity), then void
+ *                                      fraction, drag coefficients, K_sl and sources
  *     alpha = coupling_alpha(c)        [ncells] fluid volume fraction (floor alphaMin)
  *     ksl = coupling_ksl(c)            [ncells] implicit exchange coefficient [kg/(m^3 s)]
  *     up = coupling_particle_velocity(c)   [ncells][3] K-weighted particle velocity [m/s]:

@@ -18,11 +18,11 @@
  *   implicit: DEM sub-steps with cpl_fluid_force (beta, u_f frozen, v current); after them, the
  *             void fraction (new weights), gather u_f, alpha, grad p with those weights,
  *             cpl_fluid_forces_eval, then cpl_exchange_cells with the same v. The fluid solves
- *             with K_sl (up - u_f) implicit in u_f; the next sub-steps use these beta, u_f (or
- *             re-evaluate them with the new fluid field).
- *   explicit: cpl_fluid_forces_eval once (forces frozen), the DEM sub-steps with them, then
- *             cpl_exchange_cells spreads the same frozen forces with the current weights (any
- *             weights summing to 1 conserve them).
+ *             with K_sl (up - u_f) implicit in u_f; the next sub-steps use the same beta with
+ *             u_f gathered from the new field (coupling.c says why beta is kept).
+ *   explicit: the forces of the last exchange (frozen), the DEM sub-steps with them, then the
+ *             evaluation and cpl_exchange_cells as above: the fluid receives the forces the
+ *             particles will feel in the next sub-steps.
  * Equations, choices: docs/models/exchange_implicit_explicit.md. */
 #ifndef CPL_EXCHANGE_H
 #define CPL_EXCHANGE_H

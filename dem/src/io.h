@@ -32,6 +32,7 @@ typedef struct dem_contact_state {
     int64_t *keys;           /* 2 per contact: ids (i, j), or (-1 - wall, particle id) */
     double *history;         /* history_size per contact */
     int forces_read;         /* reader: p->f and p->torque hold the snapshot's forces */
+    int coupling_read;       /* reader: p->beta and p->f_fluid hold the snapshot's (coupled runs) */
 } dem_contact_state;
 
 void dem_contact_state_free(dem_contact_state *cs);

@@ -663,6 +663,7 @@ int dem_io_read_snapshot_at(const char *base, double at_time, double tolerance, 
     if (cs) {
         read_contacts(g, cs, path);
         cs->forces_read = found[PF_FIELD_f] && found[PF_FIELD_torque];
+        cs->coupling_read = found[PF_FIELD_beta] && found[PF_FIELD_f_fluid];
     }
     H5Gclose(g);
     chk(H5Fclose(file), path, "cannot close file");

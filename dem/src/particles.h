@@ -30,11 +30,13 @@ enum { PF_WRITE = 1, PF_RESTART = 2, PF_MIGRATE = 4 };
  *     increment twice (restart.c). They migrate: the next step's first half kick uses them.
  *   - mass and the inverses follow from radius and the material's density: recomputed on
  *     restart (dem_restart_read), moved along on migration (cheaper than looking up the material).
- *   - The coupling's fields (coupling/src/coupling.c) are no restart fields: beta, u_fluid and
- *     f_fluid are evaluated again from the fluid field at the start of every fluid step, before
- *     any DEM step uses them, and a snapshot is written only between fluid steps. fluid_cell is
- *     only where the search for the particle's cell starts (0 is as good a start as any), and
- *     a cell number of one rank's mesh means nothing on another: it does not migrate. */
+ *   - The coupling's fields (coupling/src/coupling.c): beta and f_fluid are set at the end of
+ *     each fluid step's DEM steps, where the fluid receives them (its K_sl and explicit source),
+ *     and the particles feel them through the next fluid step: a restart field, so that a
+ *     continued run feels what the fluid of its start time received. u_fluid and f_pgrad are
+ *     taken again from the fluid field at the start of every fluid step. fluid_cell is only
+ *     where the search for the particle's cell starts (0 is as good a start as any), and a cell
+ *     number of one rank's mesh means nothing on another: it does not migrate. */
 #define PARTICLE_FIELDS(X)                                                                      \
     X(x,           dem_vec3,   "m",        "position",        PF_WRITE | PF_RESTART | PF_MIGRATE)    \
     X(v,           dem_vec3,   "m/s",      "velocity",        PF_WRITE | PF_RESTART | PF_MIGRATE)    \
@@ -55,11 +57,13 @@ enum { PF_WRITE = 1, PF_RESTART = 2, PF_MIGRATE = 4 };
     X(id,          int64,  "1",        "id",              PF_WRITE | PF_RESTART | PF_MIGRATE)    \
     /* coupling: the fluid cell of the centre at the last exchange (-1: outside the mesh) */   \
     X(fluid_cell,  int,    "1",        "fluid_cell",      0)                                     \
-    /* coupling: the fluid force is beta (u_fluid - v) + f_fluid, beta and u_fluid frozen at    \
-     * the exchange (beta 0 when explicit), f_fluid the part that does not depend on v */      \
-    X(beta,        double, "kg/s",     "drag_coefficient", PF_MIGRATE)                           \
+    /* coupling: the fluid force is beta (u_fluid - v) + f_fluid + f_pgrad; beta (0 when      \
+     * explicit) and f_fluid (the exchanged part that does not depend on v) as the fluid        \
+     * received them, u_fluid and f_pgrad (model A's -V_p grad p) from the current field */    \
+    X(beta,        double, "kg/s",     "drag_coefficient", PF_RESTART | PF_MIGRATE)              \
     X(u_fluid,     dem_vec3,   "m/s",      "fluid_velocity",  PF_MIGRATE)                            \
-    X(f_fluid,     dem_vec3,   "N",        "fluid_force_fixed", PF_MIGRATE)
+    X(f_fluid,     dem_vec3,   "N",        "fluid_force_fixed", PF_RESTART | PF_MIGRATE)             \
+    X(f_pgrad,     dem_vec3,   "N",        "pressure_gradient_force", PF_MIGRATE)
 
 /* The element types the list may use: C type, components, scalar kind. */
 #define PF_CTYPE_dem_vec3 dem_vec3
