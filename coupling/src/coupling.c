@@ -432,6 +432,11 @@ void coupling_particle_means(const coupling *c, double v[3], double x[3])
     for (int q = 0; q < 3; q++) if (p->n) { v[q] /= p->n; x[q] /= p->n; }
 }
 
+void coupling_particle_forces(const coupling *c, double fluid[3], double walls[3])
+{
+    for (int q = 0; q < 3; q++) { fluid[q] = c->fluid_force[q]; walls[q] = c->wall_force[q]; }
+}
+
 void coupling_write(coupling *c, double time)
 {
     /* at an exchange the DEM's time is the fluid's; the snapshot takes the fluid's exactly, so

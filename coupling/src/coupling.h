@@ -61,6 +61,9 @@ int coupling_interval(const coupling *c);       /* DEM steps per fluid step */
 int coupling_particle_count(const coupling *c);
 /* Mean particle velocity [m/s] and position [m] (for the tutorials' checks and the log). */
 void coupling_particle_means(const coupling *c, double v[3], double x[3]);
+/* The fluid's and the walls' force on all particles [N], each the mean over the last fluid
+ * step's DEM steps (postProcessing/particles.dat has them too). */
+void coupling_particle_forces(const coupling *c, double fluid[3], double walls[3]);
 
 void coupling_write(coupling *c, double time);
 /* Wall seconds spent so far in the DEM and in the coupling layer. */

@@ -6,7 +6,12 @@
  *    V (K_sl (up - U) + S) equals minus the exchanged part of the fluid force on the particles
  *    (model B: drag and buoyancy), within 0.1 % at terminal velocity.
  *  - The same with the fluid fields interpolated (cellPoint, cellLinear) instead of gathered.
- *  - A dt_f that is not couplingInterval x the DEM step is refused (tested in the shell cases). */
+ *  - A dt_f that is not couplingInterval x the DEM step is refused (tested in the shell cases).
+ *  - In a field that jitters from step to step (U_z = 0.1 +- 0.05 m/s, alternating, as the
+ *    centre void fraction's gas does), the force the particle feels over a fluid step equals
+ *    what the fluid received for that step (K_sl (up - U) + S with the U it then solved), summed
+ *    over 1000 steps, within 1e-4: the particle keeps the drag coefficient the fluid received.
+ *    (Evaluating it again with the new slip made the particle feel 3.0 % more here.) */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -77,8 +82,45 @@ static void settle(const char *model, const char *interp)
     if (system(cmd) != 0) perror("rm");
 }
 
+static void jitter(void)
+{
+    char dir[256];
+    snprintf(dir, sizeof dir, "/tmp/cpl_session_jitter_%d", (int)getpid());
+    write_case(dir, "B", "cell");
+    cpl_mesh m;
+    const double lo[3] = {-0.01, -0.01, 0.0}, hi[3] = {0.01, 0.01, 0.1};
+    cpl_mesh_box(&m, lo, hi, 4, 4, 20);
+    const int nc = m.ncells;
+    const double rho_f = 10.0, nu = 1e-5, g = 9.81;
+    coupling *c = coupling_create(dir, &m, rho_f, nu, 1e-4, 0.0);
+    double (*U)[3] = calloc((size_t)nc, sizeof *U), (*gp)[3] = calloc((size_t)nc, sizeof *gp);
+    for (int k = 0; k < nc; k++) gp[k][2] = -rho_f * g;
+    double felt = 0.0, received = 0.0, fluid[3], walls[3];
+    for (int step = 0; step < 1500; step++) {
+        for (int k = 0; k < nc; k++) U[k][2] = 0.1 + (step % 2 ? 0.05 : -0.05);
+        if (step > 0 && step >= 500) {   /* the fluid's step-1 exchange, with the U it solved */
+            const double *ksl = coupling_ksl(c), (*up)[3] = coupling_particle_velocity(c);
+            const double (*S)[3] = coupling_explicit_source(c);
+            for (int k = 0; k < nc; k++) received += (ksl[k] * (up[k][2] - U[k][2]) + S[k][2]) * 1.25e-7;
+        }
+        coupling_evolve(c, (const double (*)[3])U, (const double (*)[3])gp);
+        coupling_particle_forces(c, fluid, walls);
+        if (step >= 500) felt += fluid[2];   /* from the particle settled in the mean flow */
+    }
+    /* the last exchange's counterpart is not felt yet: drop it from neither side, both sums
+     * cover steps 500..1499 (received for the exchanges of steps 499..1498) */
+    check_rel("jittering field: force felt by the particle over 1000 fluid steps vs received by the fluid",
+              felt, -received, 1e-4);
+    coupling_free(c);
+    free(U); free(gp);
+    char cmd[300];
+    snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
+    if (system(cmd) != 0) perror("rm");
+}
+
 int main(void)
 {
+    jitter();
     settle("B", "cell");
     settle("A", "cell");
     settle("B", "cellPoint");   /* grad p interpolated: uniform here, so the same result */
