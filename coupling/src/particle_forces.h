@@ -20,9 +20,11 @@
  * Model B (set III): the particle feels the drag divided by alpha and the Archimedes buoyancy,
  *     F = (beta_p / alpha) (u_f - v) - rho_f V_p g
  * and the fluid equation carries grad p and the total interaction:
- *     rho_f [d(alpha u)/dt + div(alpha u u)] = -grad p + div(tau) + alpha rho_f g
+ *     rho_f [d(alpha u)/dt + div(alpha u u)] = -grad p + div(alpha tau) + alpha rho_f g
  *                                               + K_sl (up - u) + S,
  *     S = sum over the cell's particles of w rho_f V_p g / V_cell (+ the explicit drag).
+ * (Zhou et al.'s set III has div(tau); voidPimpleFoam keeps alpha tau in both models, as
+ * DPMFoam does: the viscous stress of the gas acts on the gas's share of the cell.)
  * Why beta_p / alpha: in a steady uniform suspension the fluid equation of model A gives
  * grad p = rho_f g - n f_d / alpha (n particles per volume, f_d the drag), so the model A force
  * f_d - V_p grad p = f_d / alpha - rho_f V_p g: the dynamic part of the pressure gradient is
@@ -108,8 +110,8 @@ void cpl_fluid_forces_free(cpl_fluid_forces *f);
  * index (alpha just above 1 from round-off is taken as 1). */
 void cpl_fluid_forces_eval(const cpl_force_params *p, const cpl_particle_fluid *in, cpl_fluid_forces *out);
 
-/* The force on particle i at velocity v [N]: every DEM sub-step (implicit mode re-evaluates the
- * drag with the current v; explicit mode returns the frozen force). It is affine in v,
+/* The force on particle i at velocity v [N]: every DEM sub-step (implicit mode gives the drag at
+ * the current v; explicit mode returns the frozen force). It is affine in v,
  * F = (beta u_f + f_exchange + f_equation) - beta v, so a DEM integrator may also treat the
  * beta v part implicitly. */
 static inline void cpl_fluid_force(const cpl_fluid_forces *f, int i, const double v[3], double F[3])

@@ -22,7 +22,7 @@ Description
     momentum (conservative)
         ddt(alpha U) + div(alpha phi, U)
       - div(alpha nu (grad(U) + dev2(T(grad(U)))))
-      = - c grad(p)                         c = 1 (model B, default) or alpha (model A)
+      = - c grad(p)                         c = 1 (model B) or alpha (model A)
         + alpha g                           gravity as a body force on the fluid
         + Ksl/rho_f (Up - U)                drag, implicit: fvm::Sp(Ksl/rho_f, U) on the left,
                                             Ksl/rho_f Up as a source
