@@ -29,9 +29,12 @@ Checks (CHECK lines; exit 1 on a FAIL):
                the force the particles give the fluid plus the gas's weight and acceleration;
   exchange_percent: the mean force the fluid receives from the particles (at the end of each
                fluid step, with the new fluid velocity) against the mean force the particles felt
-               during the DEM steps (postProcessing/particles.dat), over the window, 1 %: the
-               implicit exchange lags by a fluid step, so the two agree on average, not step by
-               step; the particles' own balance (fluid + walls - weight - M dv/dt) is printed;
+               during the DEM steps (postProcessing/particles.dat), over the window: the particles
+               feel the drag coefficient the fluid received with that new velocity, so the two
+               differ only by beta times the particles' velocity change within a fluid step, which
+               averages out (0.006 % in the short variant; beta evaluated again with the new slip
+               had left 2.5 % in the full run), 0.1 %; the particles' own balance (fluid +
+               walls - weight - M dv/dt) is printed;
   expansion:   mean h against h_0 = N V_p / (0.6 A), the height of the bed packed at a solid
                fraction of 0.6, within [1.05, 2.0]: above 1.05 the bed has expanded beyond a
                packing; below 2 it is a dense bed (h_0 is 150 mm, the column 450 mm);
@@ -69,7 +72,8 @@ from matplotlib.animation import PillowWriter
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
 import foamcase as fc  # noqa: E402
 
-TOL_DP, TOL_MOMENTUM, TOL_EXCHANGE = 3.0, 1.0, 1.0
+TOL_DP, TOL_MOMENTUM = 3.0, 1.0
+TOL_EXCHANGE = 0.1          # %: the exchange differs only by a term that averages out (docstring)
 TOL_LID = 0.5               # % of the beads at the lid, time mean over the window
 EXPANSION = (1.05, 2.0)
 DP_STD = (0.02, 0.5)

@@ -19,7 +19,8 @@ points nearer the wall than the first cell centre compared with that centre's va
 Checks per run (CHECK lines; exit 1 on a FAIL): the mean pressure drop over the statistics
 window, less the bed's momentum change, against the buoyant weight per area, 3 %; the gas
 momentum balance at every step, 1 %; the force the fluid received against what the particles
-felt, over the window, 1 %; and the profiles: the RMS difference from the measured profile at
+felt, over the window, 0.1 % (they differ only by beta times the particles' velocity change
+within a fluid step, which averages out); and the profiles: the RMS difference from the measured profile at
 most 0.1, the spread of the published CFD-DEM simulations of this bed around the measurement
 (Mueller et al.'s own DEM runs 0.08-0.1 below the MR data in the core at 16.4 mm; sediFoam's and
 CFDEM's comparisons, within a few hundredths to 0.1): a run outside it is wrong, not merely
@@ -41,7 +42,7 @@ import foamcase as fc  # noqa: E402
 
 LINES = (16.4, 31.2)            # [mm] the MR lines' heights
 CORE, WALL = (17.0, 27.0), 5.0  # [mm]
-TOL_DP, TOL_MOMENTUM, TOL_EXCHANGE, TOL_RMS = 3.0, 1.0, 1.0, 0.1
+TOL_DP, TOL_MOMENTUM, TOL_EXCHANGE, TOL_RMS = 3.0, 1.0, 0.1, 0.1
 
 
 def experiment(u, z):
