@@ -44,27 +44,62 @@ static void write_case(const char *dir, const char *model, const char *interp)
     fclose(f);
 }
 
-static void settle(const char *model, const char *interp)
-{
+/* The session of one test: the case written to dir, a 4 x 4 x 20 box mesh, and the fluid at
+ * rest with the hydrostatic pressure gradient (grad p = rho_f g). */
+enum { NX = 4, NY = 4, NZ = 20 };
+static const double RHO_F = 10.0, NU = 1e-5, G = 9.81, CELL_VOLUME = 1.25e-7;   /* [m^3] */
+typedef struct session {
     char dir[256];
-    snprintf(dir, sizeof dir, "/tmp/cpl_session_%s_%d", model, (int)getpid());
-    write_case(dir, model, interp);
+    coupling *c;
+    int nc;
+    double (*U)[3], (*gp)[3];
+} session;
+
+static void session_open(session *t, const char *name, const char *model, const char *interp)
+{
+    snprintf(t->dir, sizeof t->dir, "/tmp/cpl_session_%s_%d", name, (int)getpid());
+    write_case(t->dir, model, interp);
     cpl_mesh m;
     const double lo[3] = {-0.01, -0.01, 0.0}, hi[3] = {0.01, 0.01, 0.1};
-    cpl_mesh_box(&m, lo, hi, 4, 4, 20);
-    const int nc = m.ncells;
-    const double rho_f = 10.0, nu = 1e-5, g = 9.81;
-    coupling *c = coupling_create(dir, &m, rho_f, nu, 1e-4, 0.0);
-    double (*U)[3] = calloc((size_t)nc, sizeof *U), (*gp)[3] = calloc((size_t)nc, sizeof *gp);
-    for (int k = 0; k < nc; k++) gp[k][2] = -rho_f * g;   /* hydrostatic: grad p = rho_f g */
+    cpl_mesh_box(&m, lo, hi, NX, NY, NZ);
+    t->nc = m.ncells;
+    t->c = coupling_create(t->dir, &m, RHO_F, NU, 1e-4, 0.0);
+    t->U = calloc((size_t)t->nc, sizeof *t->U);
+    t->gp = calloc((size_t)t->nc, sizeof *t->gp);
+    for (int k = 0; k < t->nc; k++) t->gp[k][2] = -RHO_F * G;
+}
+
+static void session_close(session *t)
+{
+    coupling_free(t->c);
+    free(t->U);
+    free(t->gp);
+    char cmd[300];
+    snprintf(cmd, sizeof cmd, "rm -rf %s", t->dir);
+    if (system(cmd) != 0) perror("rm");
+}
+
+/* What the fluid receives from the last exchange with its velocity t->U, the z component of
+ * sum over cells of V_c (K_sl (up - U) + S) [N]. */
+static double received_z(const session *t)
+{
+    const double *ksl = coupling_ksl(t->c), (*up)[3] = coupling_particle_velocity(t->c);
+    const double (*S)[3] = coupling_explicit_source(t->c);
+    double sum = 0.0;
+    for (int k = 0; k < t->nc; k++) sum += (ksl[k] * (up[k][2] - t->U[k][2]) + S[k][2]) * CELL_VOLUME;
+    return sum;
+}
+
+static void settle(const char *model, const char *interp)
+{
+    session t;
+    session_open(&t, model, model, interp);
     double v[3], x[3], fluid_z = 0.0;
     for (int step = 0; step < 1500; step++) {   /* 0.15 s: about 9 relaxation times */
-        coupling_evolve(c, (const double (*)[3])U, (const double (*)[3])gp);
-        const double *ksl = coupling_ksl(c), (*up)[3] = coupling_particle_velocity(c), (*S)[3] = coupling_explicit_source(c);
-        fluid_z = 0.0;   /* what the fluid receives, sum of V_c (K_sl (up - U) + S), z [N] */
-        for (int k = 0; k < nc; k++) fluid_z += (ksl[k] * (up[k][2] - U[k][2]) + S[k][2]) * 1.25e-7;
+        coupling_evolve(t.c, (const double (*)[3])t.U, (const double (*)[3])t.gp);
+        fluid_z = received_z(&t);
     }
-    coupling_particle_means(c, v, x);
+    coupling_particle_means(t.c, v, x);
     char what[96];
     snprintf(what, sizeof what, "model %s, %s: terminal velocity vs Schiller-Naumann", model, interp);
     check_rel(what, -v[2], 0.1373, 0.01);
@@ -72,50 +107,29 @@ static void settle(const char *model, const char *interp)
      * the reaction of the exchanged part: model B drag + buoyancy = m g; model A the drag only,
      * (m - rho_f V) g (its buoyancy, -V grad p, is in the fluid equation's alpha grad p). */
     const double vol = M_PI / 6.0 * 1e-12, mass = 3000.0 * vol;
-    const double expected = -(model[0] == 'B' ? mass : mass - rho_f * vol) * g;
+    const double expected = -(model[0] == 'B' ? mass : mass - RHO_F * vol) * G;
     snprintf(what, sizeof what, "model %s, %s: force on the fluid at terminal velocity [N]", model, interp);
     check_rel(what, fluid_z, expected, 1e-3);
-    coupling_free(c);
-    free(U); free(gp);
-    char cmd[300];
-    snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
-    if (system(cmd) != 0) perror("rm");
+    session_close(&t);
 }
 
 static void jitter(void)
 {
-    char dir[256];
-    snprintf(dir, sizeof dir, "/tmp/cpl_session_jitter_%d", (int)getpid());
-    write_case(dir, "B", "cell");
-    cpl_mesh m;
-    const double lo[3] = {-0.01, -0.01, 0.0}, hi[3] = {0.01, 0.01, 0.1};
-    cpl_mesh_box(&m, lo, hi, 4, 4, 20);
-    const int nc = m.ncells;
-    const double rho_f = 10.0, nu = 1e-5, g = 9.81;
-    coupling *c = coupling_create(dir, &m, rho_f, nu, 1e-4, 0.0);
-    double (*U)[3] = calloc((size_t)nc, sizeof *U), (*gp)[3] = calloc((size_t)nc, sizeof *gp);
-    for (int k = 0; k < nc; k++) gp[k][2] = -rho_f * g;
+    session t;
+    session_open(&t, "jitter", "B", "cell");
     double felt = 0.0, received = 0.0, fluid[3], walls[3];
     for (int step = 0; step < 1500; step++) {
-        for (int k = 0; k < nc; k++) U[k][2] = 0.1 + (step % 2 ? 0.05 : -0.05);
-        if (step > 0 && step >= 500) {   /* the fluid's step-1 exchange, with the U it solved */
-            const double *ksl = coupling_ksl(c), (*up)[3] = coupling_particle_velocity(c);
-            const double (*S)[3] = coupling_explicit_source(c);
-            for (int k = 0; k < nc; k++) received += (ksl[k] * (up[k][2] - U[k][2]) + S[k][2]) * 1.25e-7;
-        }
-        coupling_evolve(c, (const double (*)[3])U, (const double (*)[3])gp);
-        coupling_particle_forces(c, fluid, walls);
+        for (int k = 0; k < t.nc; k++) t.U[k][2] = 0.1 + (step % 2 ? 0.05 : -0.05);
+        if (step >= 500) received += received_z(&t);   /* step-1's exchange, with the U it solved */
+        coupling_evolve(t.c, (const double (*)[3])t.U, (const double (*)[3])t.gp);
+        coupling_particle_forces(t.c, fluid, walls);
         if (step >= 500) felt += fluid[2];   /* from the particle settled in the mean flow */
     }
     /* the last exchange's counterpart is not felt yet: drop it from neither side, both sums
      * cover steps 500..1499 (received for the exchanges of steps 499..1498) */
     check_rel("jittering field: force felt by the particle over 1000 fluid steps vs received by the fluid",
               felt, -received, 1e-4);
-    coupling_free(c);
-    free(U); free(gp);
-    char cmd[300];
-    snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
-    if (system(cmd) != 0) perror("rm");
+    session_close(&t);
 }
 
 int main(void)
