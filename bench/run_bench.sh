@@ -1,7 +1,7 @@
 #!/bin/bash
 # 50k-sphere Hertz benchmark: LIGGGHTS 3.8.0 vs. our demRun on the same scene.
 #
-# usage: bench/run_bench.sh [--quick] [--liggghts-only | --ours-only] [--demrun PATH]
+# usage: bench/run_bench.sh [--quick] [--liggghts-only | --ours-only] [--demrun PATH] [--snapshot FILE]
 #
 #   LIGGGHTS: bench/liggghts-50k-hertz.in (run 1 = insertion, run 20000 = settling,
 #             run 2000 = settled), timed from its "Loop time of X on 1 procs for N steps
@@ -10,7 +10,9 @@
 #             "PHASE k steps=... particles=... wall_s=... particle_steps_per_s=..." lines.
 #   Both run serially (one core, nice) under /usr/bin/time -v for the peak RSS.
 #   --quick divides the settling/settled step counts by 10 (smoke test; figures not comparable
-#   with full runs). KEEP_WORK=1 keeps the temp dir with the logs.
+#   with full runs). KEEP_WORK=1 keeps the temp dir with the logs. --snapshot FILE keeps our
+#   final state (the settled bed, particles.h5) as FILE, for restarts (run_regression.sh).
+#   Wall times are the codes' own loop timers; CPU times come from /usr/bin/time (whole process).
 #
 # Output: RESULT <name> <value> lines; the last two are the ratios ours/LIGGGHTS.
 set -euo pipefail
@@ -19,12 +21,14 @@ here=$(cd "$(dirname "$0")" && pwd)
 repo=$(cd "$here/.." && pwd)
 quick=0; do_lig=1; do_ours=1
 demrun="$repo/build/dem/demRun"
+snapshot=""
 while [ $# -gt 0 ]; do
     case "$1" in
         --quick) quick=1 ;;
         --liggghts-only) do_ours=0 ;;
         --ours-only) do_lig=0 ;;
         --demrun) demrun="$2"; shift ;;
+        --snapshot) snapshot="$2"; shift ;;
         -h|--help) awk 'NR > 1 && !/^#/ { exit } NR > 1' "$0"; exit 0 ;;
         *) echo "run_bench.sh: unknown argument '$1'" >&2; exit 2 ;;
     esac
@@ -43,8 +47,9 @@ work=$(mktemp -d /tmp/bench50k.XXXXXX)
 [ "${KEEP_WORK:-0}" = 1 ] || trap 'rm -rf "$work"' EXIT
 export OMP_NUM_THREADS=1
 
-# peak RSS [bytes] from a /usr/bin/time -v report
+# peak RSS [bytes] and CPU time (user + system) [s] from a /usr/bin/time -v report
 peak_rss() { awk -F': *' '/Maximum resident set size/ { print $2 * 1024 }' "$1"; }
+cpu_time() { awk -F': *' '/User time|System time/ { t += $2 } END { print t }' "$1"; }
 
 echo "INFO date $(date -Is) host $(hostname) cpus $(grep -c ^processor /proc/cpuinfo) quick=$quick"
 
@@ -77,6 +82,7 @@ if [ $do_lig = 1 ]; then
         echo "RESULT liggghts_settling_particle_steps_per_s $lig_settle"
         echo "RESULT liggghts_settled_particle_steps_per_s $lig_settled"
         echo "RESULT liggghts_peak_rss_bytes_per_particle $lig_bpp"
+        echo "RESULT liggghts_process_cpu_s $(cpu_time "$work/lig/time.txt")"
     fi
 fi
 
@@ -105,6 +111,8 @@ if [ $do_ours = 1 ]; then
         echo "RESULT ours_settling_particle_steps_per_s $o_x1"
         echo "RESULT ours_settled_particle_steps_per_s $o_x2"
         echo "RESULT ours_peak_rss_bytes_per_particle $ours_bpp"
+        echo "RESULT ours_process_cpu_s $(cpu_time "$work/time_ours.txt")"
+        if [ -n "$snapshot" ]; then cp "$work/case50k-copy/particles.h5" "$snapshot"; fi
     fi
 fi
 
