@@ -92,8 +92,9 @@ for k in $(seq "$pairs"); do
     else
         w=$(restart new "$new_demrun" "$repo/bench/case50k"); o=$(restart old "$old_demrun" "$tree/bench/case50k")
     fi
+    echo "PAIR $k old $o new $w" >&2   # to the terminal or log as it goes (not tee /dev/stderr: that reopens a log file and truncates it)
     echo "PAIR $k old $o new $w"
-done | tee /dev/stderr | awk '
+done | awk '
     { wo[NR] = $4; co[NR] = $5; wn[NR] = $7; cn[NR] = $8; rw[NR] = $4 / $7; rc[NR] = $5 / $8 }
     function sort(a, n,   i, j, t) { for (i = 1; i <= n; i++) for (j = i + 1; j <= n; j++) if (a[j] < a[i]) { t = a[i]; a[i] = a[j]; a[j] = t } }
     function median(a, n) { return n % 2 ? a[(n + 1) / 2] : 0.5 * (a[n / 2] + a[n / 2 + 1]) }

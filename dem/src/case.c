@@ -141,7 +141,8 @@ static void read_models(const dem_dict *root, dem_system *s)
         *ids[slot] = slot == SLOT_NORMAL || slot == SLOT_TANGENTIAL
             ? dem_dict_choice(d, slot_names[slot], dem_contact_model_names(slot))
             : dem_dict_choice_opt(d, slot_names[slot], dem_contact_model_names(slot), 0);
-    m->fn_floor = dem_dict_bool_opt(d, "limitForce", 0) ? 0.0 : -INFINITY;
+    const int limit_default = dem_contact_model_get(SLOT_NORMAL, m->normal)->limit_force_default;
+    m->fn_floor = dem_dict_bool_opt(d, "limitForce", limit_default) ? 0.0 : -INFINITY;
     for (int slot = 0; slot < SLOT_COUNT; slot++) {
         const dem_contact_model *md = dem_contact_model_get(slot, *ids[slot]);
         if (md->read_case) md->read_case(d, m->values[slot]);

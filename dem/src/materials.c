@@ -32,6 +32,7 @@ void dem_materials_set_pair(dem_material_table *t, int ti, int tj, double restit
     c.beta = c.log_e / sqrt(c.log_e * c.log_e + M_PI * M_PI);
     c.friction = friction;
     c.sqrt_st_over_sn = sqrt(4.0 * c.G_eff / c.Y_eff);
+    c.damping = -2.0 * 0.91287092917527685576 * c.beta;   /* 2 sqrt(5/6) |beta| (normal_hertz.md) */
     t->pair[ti * DEM_MAX_TYPES + tj] = c;
     t->pair[tj * DEM_MAX_TYPES + ti] = c;
 }

@@ -26,6 +26,9 @@ typedef struct dem_pair_coeffs {
     double log_e;            /* ln(e), Hooke damping [-] */
     double friction;         /* Coulomb mu [-] */
     double sqrt_st_over_sn;  /* sqrt(4 G* / Y*): Hertz gamma_t over gamma_n [-] */
+    double damping;          /* alpha of the normal dashpot, gamma_n = alpha sqrt(m* dFn/d delta) [-]:
+                                Tsuji's 2 sqrt(5/6) |beta| unless the normal model's prepare sets
+                                its own (restitution.h) */
     /* per slot: the chosen model's parameters and derived constants (its *_params struct) */
     double model[SLOT_COUNT][MODEL_VALUES];
 } dem_pair_coeffs;

@@ -43,7 +43,7 @@ static void prepare_models(dem_system *s)
         const dem_contact_model *d = system_model(s, slot);
         if (d->prepare)
             for (int a = 0; a < t->ntypes; a++)
-                for (int b = 0; b < t->ntypes; b++) d->prepare(t->pair[a * DEM_MAX_TYPES + b].model[slot]);
+                for (int b = 0; b < t->ntypes; b++) d->prepare(&t->pair[a * DEM_MAX_TYPES + b], &s->models);
     }
     const dem_contact_model *normal = system_model(s, SLOT_NORMAL);
     s->contact_reach = 0.0;

@@ -20,6 +20,7 @@ cases=(
   "cdtJkr_without_adhesion|s/tangential history; }/tangential history; rolling cdtJkr; }/|demProperties:11: error: .*cdtJkr rolling model needs 'workOfAdhesion'"
   "cdtJkr_zero_adhesion|s/tangential history; }/tangential history; rolling cdtJkr; }/;s/friction 0.5; }/friction 0.5; workOfAdhesion 0; adhesionHysteresis 1; }/|demProperties:11: error: key 'workOfAdhesion'.*positive"
   "edinburgh_kappa21|s/normal hertz;/normal edinburgh;/;s/friction 0.5; }/friction 0.5; unloadingRatio 1; }/|demProperties:11: error: key 'unloadingRatio'.*exceed 1"
+  "edinburgh_damping_word|s/normal hertz;/normal edinburgh; edinburghDamping seed;/;s/friction 0.5; }/friction 0.5; unloadingRatio 2; }/|demProperties:10: error: key 'edinburghDamping'.*seedEq8"
   "sjkr_without_energy|s/tangential history; }/tangential history; cohesion sjkr; }/|demProperties:11: error: .*cohesionEnergyDensity"
   "roughness_angle|s/tangential history; }/tangential history; surface roughness; roughness { distribution uniform; max 2; } }/|demProperties:10: error: key 'max'"
   "blow_up|s/^timeStep       1e-5;/timeStep       5e-4; timeStepOverride true; endTime 1;/;/^endTime /d|blew up|left the domain"

@@ -50,6 +50,18 @@
  *     contact times) where W_tension > W_unload, below the plastic-only e at every speed, and
  *     rising with the speed (towards the plastic-only value). The model gives no fall of e with
  *     speed from plasticity: both branches are homogeneous of degree d_ex in delta.
+ *  7. the default dashpot (edinburghDamping restitution, limitForce on) at the elastic limit
+ *     (kappa21 = 1.0001, gamma_s = 0): the entered e within 1 % for e = 0.3, 0.5, 0.9,
+ *     d_ex = 1.5 and 2 (d_ex = 1.5 also as a pair), at 0.01, 0.1, 1 and 3 m/s. Printed beside it:
+ *     seed eq. 8's constant dashpot at the same speeds (speed-dependent for d_ex != 1).
+ *  8. limitForce removes only the dashpot's pull: (a) trace 1's path 0 -> delta1 -> 0 quasi-
+ *     statically (no dashpot) gives the same forces, to the bit, with limitForce on and off, so
+ *     adhesion stays (its tension reaches the closed-form peak within 1 %); (b) in an adhesive
+ *     impact (kappa21 = 5, gamma_s = 3, e = 0.5, 0.5 m/s) with limitForce the force never falls
+ *     below the adhesive branch's closed-form peak -F_min(a(delta*)) (0.1 % margin), and it does
+ *     pull (below 0); (c) the non-adhesive impact of the LIGGGHTS comparison (kappa21 = 5,
+ *     gamma_s = 0, e = 0.9, 0.1 m/s) rebounds by default, with e between 0.05 and the plastic-
+ *     only e (printed: with eq. 8 and limitForce off the pair stays held).
  */
 #include <stdlib.h>
 #include <time.h>
@@ -398,17 +410,21 @@ static void trace_hertz(void)
 
 /* ---------- impacts ---------- */
 typedef struct impact_out {
-    double restitution, contact_time, max_overlap, dt;
+    double restitution, contact_time, max_overlap, dt, min_force;
     int captured;
 } impact_out;
 
-/* sphere on the plane z = 0 (wall) or two spheres head on, approach speed v; dt = t_scale / steps */
-static impact_out edin_impact(const dem_edinburgh_params *mp, double e, int wall, double v, double t_scale, double steps)
+/* sphere on the plane z = 0 (wall) or two spheres head on, approach speed v; dt = t_scale / steps;
+ * limitForce and edinburghDamping seedEq8 as given */
+static impact_out edin_impact_with(const dem_edinburgh_params *mp, double e, int wall, double v, double t_scale,
+                                   double steps, int limit, int seed_eq8)
 {
     dem_system s;
     make_system(&s, E_MOD, NU, RHO, e, 0.0, normal_edinburgh, tangential_none, 0.01);
     dem_materials_set_model_values(&s.materials, 0, 0, SLOT_NORMAL, mp, sizeof *mp);
-    s.models.fn_floor = -INFINITY;
+    s.models.fn_floor = limit ? 0.0 : -INFINITY;
+    const dem_edinburgh_case ec = {seed_eq8};
+    SET_MODEL_CASE(&s, SLOT_NORMAL, ec);
     s.dt = t_scale / steps;
     s.nlist.skin = 0.05 * RAD;
     if (wall) {
@@ -429,6 +445,8 @@ static impact_out edin_impact(const dem_edinburgh_params *mp, double e, int wall
         dem_system_step(&s);
         const double overlap = wall ? RAD - s.p.x[0][2] : 2.0 * RAD - (s.p.x[1][2] - s.p.x[0][2]);
         if (overlap > o.max_overlap) o.max_overlap = overlap;
+        const double fn = wall ? s.p.f[0][2] : s.p.f[1][2];   /* + repulsive */
+        if (fn < o.min_force) o.min_force = fn;
         if (overlap > 0) { touched = 1; in_contact++; }
         else if (touched) break;
     }
@@ -437,6 +455,12 @@ static impact_out edin_impact(const dem_edinburgh_params *mp, double e, int wall
     o.contact_time = in_contact * s.dt;
     dem_system_free(&s);
     return o;
+}
+
+/* limitForce off, the restitution-keeping dashpot */
+static impact_out edin_impact(const dem_edinburgh_params *mp, double e, int wall, double v, double t_scale, double steps)
+{
+    return edin_impact_with(mp, e, wall, v, t_scale, steps, 0, 0);
 }
 
 static double sphere_mass(void) { return RHO * 4.0 / 3.0 * M_PI * pow(RAD, 3); }
@@ -475,7 +499,7 @@ static void impact_damping(void)
             if (!wall && q != 1) continue;
             const double meff = wall ? sphere_mass() : 0.5 * sphere_mass();
             const double k1 = 2.0 * Y * (wall ? RAD : 0.5 * RAD);
-            const impact_out o = edin_impact(&mp, es[q], wall, 0.5, M_PI * sqrt(meff / k1), 2000);
+            const impact_out o = edin_impact_with(&mp, es[q], wall, 0.5, M_PI * sqrt(meff / k1), 2000, 0, 1);
             char what[128];
             snprintf(what, sizeof what, "eq. 8 damping %s e=%g (natural log)", wall ? "wall" : "pair", es[q]);
             check_rel(what, o.restitution, es[q], 0.01);
@@ -560,6 +584,86 @@ static void impact_speed(void)
            "   most at low speed (down to capture) and e rises towards the plastic-only value as v grows.\n");
 }
 
+static void impact_default_damping(void)
+{
+    printf("\n7. default dashpot (restitution, limitForce on) at the elastic limit, kappa21=1.0001, gamma_s=0\n"
+           "   %-22s %7s %10s %10s\n", "case", "v [m/s]", "e", "eq. 8 e");
+    const double speeds[] = {0.01, 0.1, 1.0, 3.0}, es[] = {0.3, 0.5, 0.9}, ds[] = {1.5, 2.0};
+    for (int a = 0; a < 2; a++)
+        for (int wall = 1; wall >= 0; wall--) {
+            if (!wall && a != 0) continue;
+            const dem_edinburgh_params mp = edin_params(1.0001, 0.0, ds[a], 1.0);
+            for (int q = 0; q < 3; q++)
+                for (int k = 0; k < 4; k++) {
+                    const double v = speeds[k];
+                    const impact_out o = edin_impact_with(&mp, es[q], wall, v, hertz_time(v), 4000, 1, 0);
+                    const impact_out o8 = edin_impact_with(&mp, es[q], wall, v, hertz_time(v), 4000, 1, 1);
+                    char what[128];
+                    snprintf(what, sizeof what, "default dashpot d_ex=%g %s e=%g v=%g", ds[a], wall ? "wall" : "pair",
+                             es[q], v);
+                    printf("   d_ex=%g %s e=%g %7g %10.5f %10.5f\n", ds[a], wall ? "wall" : "pair", es[q], v,
+                           o.restitution, o8.restitution);
+                    check_rel(what, o.restitution, es[q], 0.01);
+                }
+        }
+}
+
+static void limit_force_keeps_adhesion(void)
+{
+    printf("\n8. limitForce removes only the dashpot's pull\n");
+    const double d1 = 2e-6;
+    const dem_edinburgh_params mp = edin_params(5.0, 4.0, 1.5, 1.0);   /* trace 1 */
+    const ref_model m = ref_make(&mp, 0);
+    trace t[2] = {{0}};
+    for (int limit = 0; limit <= 1; limit++) {
+        dem_system s;
+        pair_system(&s, &mp);
+        s.models.fn_floor = limit ? 0.0 : -INFINITY;
+        leg(&s, &t[limit], 0.0, d1, NLEG);
+        leg(&s, &t[limit], d1, 0.0, NLEG);
+        dem_system_free(&s);
+    }
+    int same = t[0].n == t[1].n;
+    double fmin = 0.0;
+    for (int k = 0; same && k < t[0].n; k++) {
+        same &= t[0].f[k] == t[1].f[k];
+        fmin = fmin < t[1].f[k] ? fmin : t[1].f[k];
+    }
+    check_true("quasi-static trace 0 -> delta1 -> 0: limitForce on = off, bit for bit", same);
+    double fmin_star, dmin_star;
+    int clamped;
+    ref_fmin(&m, ref_dstar(&m, m.lam * d1), m.lam * d1, &fmin_star, &dmin_star, &clamped);
+    check_rel("quasi-static trace with limitForce: tensile peak = -F_min(a(delta*))", fmin, -fmin_star, 0.01);
+    for (int k = 0; k < 2; k++) { free(t[k].d); free(t[k].f); }
+
+    /* an adhesive impact: the force stays above the adhesive branch, and does pull */
+    const dem_edinburgh_params ma = edin_params(5.0, 3.0, 1.5, 1.0);
+    const ref_model mr = ref_make(&ma, 1);
+    const double v = 0.5, mass = sphere_mass();
+    const double dm = pow(0.5 * mass * v * v * (mr.d + 1) / mr.k1, 1.0 / (mr.d + 1));
+    ref_fmin(&mr, ref_dstar(&mr, mr.lam * dm), mr.lam * dm, &fmin_star, &dmin_star, &clamped);
+    const impact_out on = edin_impact_with(&ma, 0.5, 1, v, hertz_time(v), 4000, 1, 0);
+    const impact_out off = edin_impact_with(&ma, 0.5, 1, v, hertz_time(v), 4000, 0, 0);
+    printf("   adhesive impact gamma_s=3 e=0.5 %g m/s: min Fn %.5g N with limitForce, %.5g N without; "
+           "adhesive peak of the undamped path -F_min(a(delta*)) = %.5g N; e %.4f / %.4f\n",
+           v, on.min_force, off.min_force, -fmin_star, on.restitution, off.restitution);
+    check_true("adhesive impact with limitForce: min Fn >= -1.001 F_min(a(delta*))", on.min_force >= -1.001 * fmin_star);
+    check_true("adhesive impact with limitForce: the contact still pulls (min Fn < 0)", on.min_force < 0.0);
+
+    /* the LIGGGHTS comparison's non-adhesive impact */
+    const dem_edinburgh_params mn = edin_params(5.0, 0.0, 1.5, 1.0);
+    const ref_model mpl = ref_make(&mn, 1);
+    const double l = mpl.lam, dd = mpl.d;
+    const double e_pl = sqrt(mpl.kappa * ((1 - pow(l, dd + 1)) - (dd + 1) * pow(l, dd) * (1 - l)));
+    const impact_out def = edin_impact_with(&mn, 0.9, 1, 0.1, hertz_time(0.1), 4000, 1, 0);
+    const impact_out old = edin_impact_with(&mn, 0.9, 1, 0.1, hertz_time(0.1), 4000, 0, 1);
+    printf("   non-adhesive kappa21=5 e=0.9 0.1 m/s: e %.4f by default (plastic-only %.4f); eq. 8 without "
+           "limitForce: %s (e %.4f)\n", def.restitution, e_pl, old.captured ? "held, no rebound" : "rebounds",
+           old.restitution);
+    check_true("non-adhesive impact rebounds by default (not held)", !def.captured);
+    check_true("non-adhesive impact: 0.05 < e < plastic-only e", def.restitution > 0.05 && def.restitution < e_pl);
+}
+
 int main(void)
 {
     struct timespec t0, t1;
@@ -570,6 +674,8 @@ int main(void)
     impact_hertz();
     impact_damping();
     impact_speed();
+    impact_default_damping();
+    limit_force_keeps_adhesion();
     clock_gettime(CLOCK_MONOTONIC, &t1);
     printf("run time %.2f s\n", (t1.tv_sec - t0.tv_sec) + 1e-9 * (t1.tv_nsec - t0.tv_nsec));
     return finish("test_edinburgh");

@@ -122,7 +122,9 @@ static ALWAYS_INLINE int contact_evaluate(int normal, int tangential, int cohesi
         for (int q = 0; q < hs; q++) h[q] = 0.0;
         return 0;
     }
-    if (!(n.fn > m->fn_floor)) n.fn = m->fn_floor;   /* limitForce */
+    /* limitForce: the dashpot may not pull below what the elastic and adhesive branches give */
+    const double fn_min = n.fn_spring < m->fn_floor ? n.fn_spring : m->fn_floor;
+    if (!(n.fn > fn_min)) n.fn = fn_min;
     const double fn = cohesion != cohesion_none ? n.fn + cohesion_force(cohesion, k, c) : n.fn;
     double f[3] = {fn * en_f[0], fn * en_f[1], fn * en_f[2]};
     if (tangential != tangential_none) {

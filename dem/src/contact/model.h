@@ -35,7 +35,7 @@ enum dem_contact_slot { SLOT_NORMAL, SLOT_TANGENTIAL, SLOT_COHESION, SLOT_ROLLIN
 /* The models chosen for a case, and their case-wide settings. */
 typedef struct dem_contact_models {
     int normal, tangential, cohesion, rolling, surface;   /* ids: enum normal_model, ... */
-    double fn_floor;      /* limitForce: 0 (no pull from the dashpot), else -inf */
+    double fn_floor;      /* limitForce: 0 (Fn never below min(F_el, 0): no pull from the dashpot), else -inf */
     /* per slot: the chosen model's case-wide settings (its *_case struct), from contactModels */
     double values[SLOT_COUNT][MODEL_VALUES];
 } dem_contact_models;
@@ -65,8 +65,11 @@ typedef struct dem_contact_model {
     int nparams;
     /* optional: reject a parameter combination; returns a message and sets *key, or NULL */
     const char *(*check)(const double *values, const char **key);
-    /* optional: derived constants (into the same values, after the parameters) */
-    void (*prepare)(double *values);
+    /* optional: derived constants of one material pair: into its values (c->model[slot], after
+     * the parameters) or, for normal models, the dashpot c->damping; m: the case's settings */
+    void (*prepare)(struct dem_pair_coeffs *c, const dem_contact_models *m);
+    /* normal models: limitForce when the case does not say (1: on) */
+    int limit_force_default;
     /* optional: read the case-wide settings from contactModels into values */
     void (*read_case)(const struct dem_dict *contact_models_dict, double *values);
     /* normal models: duration of an elastic impact at relative speed v [s], and its name */

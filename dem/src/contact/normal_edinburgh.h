@@ -7,7 +7,20 @@
  * contact (1 double), forgotten when the contact ends. Parameters per interaction:
  * unloadingRatio kappa21 (> 1, required), surfaceEnergy gamma_s [J/m^2] (0), loadingExponent d_ex
  * (1.5), adhesionExponent c_ex (1.5), tensionThreshold F_0 [N] (0); the time-step check shortens
- * the elastic contact time by sqrt(kappa21).
+ * the elastic contact time by sqrt(kappa21). Case-wide in contactModels: edinburghDamping
+ * `restitution` (default) or `seedEq8`; limitForce defaults to on for this model.
+ *
+ * The dashpot (eq. 8 of the note, and a default that keeps the entered restitution):
+ *  - seedEq8: gamma_n = sqrt(4 m* k1 / (1 + (pi / ln e)^2)), constant, as the note and LIGGGHTS.
+ *    Exact only for d_ex = 1: with d_ex = 1.5 the spring is soft at small overlap, the dashpot
+ *    constant, and the rebound depends on the speed (e = 0.9 entered gives about 0.1-0.3 at
+ *    0.01-1 m/s). docs/models/normal_edinburgh.md has the curves.
+ *  - restitution: gamma_n = alpha sqrt(m* dF/d delta) on the loading branch, alpha from e, d_ex
+ *    and limitForce (restitution.h): at the elastic limit (kappa21 -> 1) the restitution is e at
+ *    every speed; for d_ex = 1 without limitForce it is eq. 8.
+ * limitForce keeps Fn >= min(F_el + F_0, 0): the dashpot cannot pull, adhesion stays. It is on by
+ * default: without it a non-adhesive pair that has deformed plastically is held by the dashpot
+ * (F_el = 0 below the plastic overlap) and never parts.
  *
  * Choices where the note is open:
  *  - eq. 8 calls e_log the common logarithm of the restitution; we use the natural one, the only
@@ -22,7 +35,9 @@
 #define DEM_NORMAL_EDINBURGH_H
 
 #include <math.h>
+#include "../dict.h"
 #include "../materials.h"
+#include "../restitution.h"
 
 /* Parameters per interaction (keys in edinburgh_param_table), then the derived lambda. */
 typedef struct dem_edinburgh_params {
@@ -33,6 +48,11 @@ typedef struct dem_edinburgh_params {
     double f0;          /* tension threshold F_0 [N] (normal_edinburgh.md eq. 9) */
     double lambda;      /* (1 - 1/kappa21)^(1/d_ex) (normal_edinburgh.md eq. 3), derived */
 } dem_edinburgh_params;
+
+/* Case-wide: which dashpot (see above). */
+typedef struct dem_edinburgh_case {
+    double seed_eq8;    /* 1: seed 002 eq. 8; 0: restitution-keeping alpha */
+} dem_edinburgh_case;
 _Static_assert(sizeof(dem_edinburgh_params) <= MODEL_VALUES * sizeof(double), "edinburgh_params too large");
 
 static const dem_model_param edinburgh_param_table[] = {
@@ -78,13 +98,17 @@ static inline dem_normal_result normal_edinburgh_force(const dem_contact *k, con
     const double f_load = k1 * delta_d, f_adh = -k_c * delta_c;
     const double f_el = f_tmp >= f_load ? f_load : (f_tmp > f_adh ? f_tmp : f_adh);     /* normal_edinburgh.md eq. 7 */
 
-    const double pi_over_log_e = M_PI / c->log_e;                       /* e = 1: -inf, gamma 0 */
-    const double gamma_n = sqrt(4.0 * k->m_eff * k1 / (1.0 + pi_over_log_e * pi_over_log_e));  /* normal_edinburgh.md eq. 8 */
-
     dem_normal_result r;
+    r.kn = k1 * d_ex * (delta > 0.0 ? delta_d / delta : 0.0);                           /* dF/d delta on loading */
+    double gamma_n;
+    if (MODEL_CASE(m, SLOT_NORMAL, dem_edinburgh_case)->seed_eq8 != 0.0) {
+        const double pi_over_log_e = M_PI / c->log_e;                   /* e = 1: -inf, gamma 0 */
+        gamma_n = sqrt(4.0 * k->m_eff * k1 / (1.0 + pi_over_log_e * pi_over_log_e));   /* normal_edinburgh.md eq. 8 */
+    } else {
+        gamma_n = c->damping * sqrt(k->m_eff * r.kn);                                   /* normal_edinburgh.md eq. 8a */
+    }
     r.fn = f_el - gamma_n * k->vn + p->f0;                                              /* normal_edinburgh.md eq. 8, 9 */
-    r.kn = k1 * d_ex * (delta > 0.0 ? delta_d / delta : 0.0);
-    r.fn_spring = f_el;
+    r.fn_spring = f_el + p->f0;   /* what limitForce keeps (evaluate.h) */
     r.kt = 8.0 * c->G_eff * sqrt(k->r_eff * delta);
     r.gammat = 0.0;
     r.active = 1;
@@ -112,16 +136,25 @@ static inline const char *edinburgh_check(const double *values, const char **key
         : "kappa21 = k2/k1 must exceed 1: with k2 <= k1 the plastic overlap of seed 002 eq. 3 is undefined";
 }
 
-static inline void edinburgh_prepare(double *values)
+static inline void edinburgh_prepare(dem_pair_coeffs *c, const dem_contact_models *m)
 {
-    dem_edinburgh_params *p = (dem_edinburgh_params *)values;
+    dem_edinburgh_params *p = (dem_edinburgh_params *)c->model[SLOT_NORMAL];
     p->lambda = pow(1.0 - 1.0 / p->kappa21, 1.0 / p->d_ex);                            /* normal_edinburgh.md eq. 3 */
+    if (MODEL_CASE(m, SLOT_NORMAL, dem_edinburgh_case)->seed_eq8 == 0.0)               /* normal_edinburgh.md eq. 8a */
+        c->damping = dem_damping_for_restitution(c->restitution, p->d_ex, m->fn_floor == 0.0);
+}
+
+static inline void edinburgh_read_case(const dem_dict *d, double *values)
+{
+    static const char *const dampings[] = {"restitution", "seedEq8", NULL};
+    ((dem_edinburgh_case *)values)->seed_eq8 = dem_dict_choice_opt(d, "edinburghDamping", dampings, 0);
 }
 
 static const dem_contact_model normal_edinburgh_model = {
     .slot = SLOT_NORMAL, .name = "edinburgh", .history = 1, .needs_contact_radius = 1,
     .params = edinburgh_param_table, .nparams = 5,
-    .check = edinburgh_check, .prepare = edinburgh_prepare,
+    .check = edinburgh_check, .prepare = edinburgh_prepare, .read_case = edinburgh_read_case,
+    .limit_force_default = 1,
     .contact_time = edinburgh_contact_time, .contact_time_name = "edinburgh unloading",
 };
 
