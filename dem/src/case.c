@@ -36,6 +36,18 @@ static void read_materials(const dem_dict *root, dem_system *s)
         const dem_dict *m = dem_dict_dict_at(d, i);
         dem_material *mat = &t->mat[t->ntypes++];
         snprintf(mat->name, sizeof mat->name, "%s", dem_dict_key_at(d, i));
+        mat->rigid = dem_dict_bool_opt(m, "rigid", 0);
+        if (mat->rigid) {   /* Y* and G* of a contact with it are the particle's alone */
+            static const char *const unused[] = {"youngsModulus", "poissonsRatio", "density"};
+            for (int k = 0; k < 3; k++)
+                if (dem_dict_has(m, unused[k]))
+                    dem_dict_fatal(m, unused[k], "a rigid material adds no compliance and has no mass: remove '%s' "
+                                   "(or 'rigid true' for an elastic wall)", unused[k]);
+            mat->youngs_modulus = INFINITY;
+            mat->poisson_ratio = 0.0;
+            mat->density = 0.0;
+            continue;
+        }
         mat->youngs_modulus = dem_dict_scalar(m, "youngsModulus", 1e3, 1e13);
         mat->poisson_ratio = dem_dict_scalar(m, "poissonsRatio", 0.0, 0.4999);
         mat->density = dem_dict_scalar(m, "density", 1.0, 1e5);
@@ -157,6 +169,16 @@ static int material_of(const dem_dict *d, const dem_material_table *t)
     return k;
 }
 
+/* a particles' material: not a rigid one */
+static int particle_material_of(const dem_dict *d, const dem_material_table *t)
+{
+    const int k = material_of(d, t);
+    if (t->mat[k].rigid)
+        dem_dict_fatal(d, "material", "'%s' is rigid: only walls may use it (particles need youngsModulus, "
+                       "poissonsRatio and density)", t->mat[k].name);
+    return k;
+}
+
 /* axis, centre (the two coordinates across the axis) and radius of a cylinder wall or region */
 static void read_cylinder(const dem_dict *d, int *axis, double centre[2], double *radius)
 {
@@ -206,6 +228,17 @@ static void read_symmetry_plane(const dem_dict *e, const char *name, dem_system 
     sp->offset = sp->point[0] * sp->normal[0] + sp->point[1] * sp->normal[1] + sp->point[2] * sp->normal[2];
 }
 
+/* a plane's translation, `velocity (vx vy vz)` [m/s], 0 by default */
+static void read_wall_velocity(const dem_dict *e, dem_wall *w)
+{
+    static const double zero[3] = {0.0, 0.0, 0.0};
+    double u[3];
+    dem_dict_vector_opt(e, "velocity", u, zero);
+    for (int d = 0; d < 3; d++)
+        if (!(fabs(u[d]) <= 1e6)) dem_dict_fatal(e, "velocity", "a wall velocity of %g m/s is out of range", u[d]);
+    dem_wall_set_velocity(w, u);
+}
+
 static void read_walls(const dem_dict *root, dem_system *s)
 {
     const dem_dict *d = dem_dict_sub_opt(root, "walls");
@@ -235,6 +268,7 @@ static void read_walls(const dem_dict *root, dem_system *s)
                 dem_dict_vector(e, "boundsMin", w->bounds_min);
                 dem_dict_vector(e, "boundsMax", w->bounds_max);
             }
+            read_wall_velocity(e, w);
         } else if (kind == 1) {
             double lo[3], hi[3];
             dem_dict_vector(e, "min", lo);
@@ -253,6 +287,7 @@ static void read_walls(const dem_dict *root, dem_system *s)
                 w->point[0] = lo[0]; w->point[1] = lo[1]; w->point[2] = lo[2];
                 w->point[a] = k % 2 ? hi[a] : lo[a];
                 w->normal[a] = k % 2 ? -1.0 : 1.0;
+                read_wall_velocity(e, w);
             }
         } else {
             dem_wall *w = new_wall(s, e, name);
@@ -263,6 +298,10 @@ static void read_walls(const dem_dict *root, dem_system *s)
             w->inside = dem_dict_choice_opt(e, "side", sides, 0) == 0;
             w->axial_min = dem_dict_scalar_opt(e, "axialMin", -INFINITY, -INFINITY, INFINITY);
             w->axial_max = dem_dict_scalar_opt(e, "axialMax", INFINITY, -INFINITY, INFINITY);
+            w->angular_velocity = dem_dict_scalar_opt(e, "angularVelocity", 0.0, -1e6, 1e6);   /* rad/s */
+            if (dem_dict_has(e, "velocity"))
+                dem_dict_fatal(e, "velocity", "a cylinder wall turns about its axis ('angularVelocity' [rad/s]); "
+                               "it does not translate");
         }
     }
 }
@@ -343,18 +382,25 @@ static void run_insertions(const dem_dict *root, dem_system *s, int insert, cons
         ins.method = dem_dict_choice_opt(e, "method", methods, INSERT_RANDOM);
         const double zero[3] = {0, 0, 0};
         dem_dict_vector_opt(e, "velocity", ins.velocity, zero);
+        if (dem_dict_has(e, "prescribedVelocity")) {   /* a piston or probe: moves at it whatever the forces */
+            if (dem_dict_has(e, "velocity"))
+                dem_dict_fatal(e, "prescribedVelocity", "give either 'velocity' (the start velocity) or "
+                               "'prescribedVelocity' (kept for the whole run), not both");
+            dem_dict_vector(e, "prescribedVelocity", ins.velocity);
+            ins.prescribed = 1;
+        }
         ins.seed = (uint64_t)dem_dict_label_opt(e, "seed", 12345, 0, 2147483647L);
         if (ins.method == INSERT_FILE) {
             const char *f = dem_dict_word(e, "file");
             const int n = f[0] == '/' ? snprintf(ins.file, sizeof ins.file, "%s", f)
                                       : snprintf(ins.file, sizeof ins.file, "%s/%s", constant_dir, f);
             if (n >= (int)sizeof ins.file) dem_dict_fatal(e, "file", "the path is too long");
-            ins.material = dem_dict_has(e, "material") ? material_of(e, &s->materials) : -1;
+            ins.material = dem_dict_has(e, "material") ? particle_material_of(e, &s->materials) : -1;
             ins.has_diameter = dem_dict_has(e, "diameter");
             if (ins.has_diameter) read_diameter(e, &ins);
         } else {
             read_region(e, &ins);
-            ins.material = material_of(e, &s->materials);
+            ins.material = particle_material_of(e, &s->materials);
             read_diameter(e, &ins);
             if (ins.method == INSERT_RANDOM) {
                 if (dem_dict_has(e, "number") == dem_dict_has(e, "solidFraction"))

@@ -213,6 +213,7 @@ long dem_insertion_run(dem_system *s, const dem_insertion *ins)
             g.next = dem_realloc(g.next, (size_t)capacity * sizeof(int));
         }
         const int i = dem_particles_add(p, x, ins->velocity, radius, density, ins->material, s->next_id++);
+        if (ins->prescribed) dem_particles_prescribe(p, i);
         grid_add(&g, p, i);
         placed++;
         volume += 4.0 / 3.0 * M_PI * radius * radius * radius;
@@ -327,6 +328,7 @@ long dem_insertion_add_batch(dem_system *s, const dem_insertion *ins, const dem_
         }
         const int k = dem_particles_add(p, x, b->v[i], r, s->materials.mat[b->material[i]].density, b->material[i],
                                     s->next_id++);
+        if (ins->prescribed) dem_particles_prescribe(p, k);
         grid_add(&g, p, k);
     }
     free(g.head);

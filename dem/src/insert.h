@@ -31,6 +31,7 @@ typedef struct dem_insertion {
     double solid_fraction;          /* random: else fill to this solid fraction of the region */
     int material;                   /* -1: none given (file: then every line must name one) */
     double velocity[3];
+    int prescribed;                 /* 1: velocity is prescribedVelocity (the particles keep it) */
     int has_diameter;               /* file: a diameter entry was given */
     enum dem_size_distribution dist;
     double d_value, d_min, d_max, d_mean, d_std;  /* diameters [m] */

@@ -166,6 +166,8 @@ static void read_columns(reader *rd)
                     l += (size_t)snprintf(list + l, sizeof list - l, "%s%s", t ? ", " : "", rd->s->materials.mat[t].name);
                 file_fatal(rd, line, "column 8: material '%.*s' is not among the materials (%s)", (int)clen[7], col[7], list);
             }
+            if (rd->s->materials.mat[material].rigid)
+                file_fatal(rd, line, "column 8: material '%s' is rigid: only walls may use it", name);
         }
         push(rd, line, val, ncol >= 7 ? val + 4 : NULL, d, material);
     }

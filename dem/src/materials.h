@@ -15,6 +15,7 @@ typedef struct dem_material {
     double youngs_modulus;   /* E [Pa] */
     double poisson_ratio;    /* nu [-] */
     double density;          /* rho [kg/m^3] */
+    int rigid;               /* a wall that adds no compliance: 1/E = 0 in Y* and G* (walls only) */
 } dem_material;
 
 /* Constants for one pair of types (also used for particle-wall with the wall's material). */

@@ -41,6 +41,14 @@ void dem_particles_set_mass(dem_particles *p, int i, double density)
     p->mass[i] = m;
     p->inv_mass[i] = 1.0 / m;
     p->inv_inertia[i] = 1.0 / (0.4 * m * r * r);
+    if (p->prescribed[i]) p->inv_mass[i] = p->inv_inertia[i] = 0.0;   /* the kicks leave it alone */
+}
+
+void dem_particles_prescribe(dem_particles *p, int i)
+{
+    p->prescribed[i] = 1;
+    p->inv_mass[i] = p->inv_inertia[i] = 0.0;
+    p->omega[i][0] = p->omega[i][1] = p->omega[i][2] = 0.0;
 }
 
 /* A new particle at index n (grown if needed), all fields 0. */

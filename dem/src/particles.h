@@ -30,6 +30,10 @@ enum { PF_WRITE = 1, PF_RESTART = 2, PF_MIGRATE = 4 };
  *     increment twice (restart.c). They migrate: the next step's first half kick uses them.
  *   - mass and the inverses follow from radius and the material's density: recomputed on
  *     restart (dem_restart_read), moved along on migration (cheaper than looking up the material).
+ *   - prescribed particles (a piston, a probe) keep their velocity whatever the forces: their
+ *     inverse mass and inertia are 0, so the integrator's kicks leave them as they are and the
+ *     drift moves them; their forces are still computed (and written). A restart field, since
+ *     the inverses are recomputed from it.
  *   - The coupling's fields (coupling/src/coupling.c): beta and f_fluid are set at the end of
  *     each fluid step's DEM steps, where the fluid receives them (its K_sl and explicit source),
  *     and the particles feel them through the next fluid step: a restart field, so that a
@@ -55,6 +59,8 @@ enum { PF_WRITE = 1, PF_RESTART = 2, PF_MIGRATE = 4 };
     X(type,        int,    "1",        "type",            PF_WRITE | PF_RESTART | PF_MIGRATE)    \
     /* global id, stable across sorting, restarts and ranks */                                 \
     X(id,          int64,  "1",        "id",              PF_WRITE | PF_RESTART | PF_MIGRATE)    \
+    /* 1: moves at its velocity whatever the forces (insertion's prescribedVelocity) */          \
+    X(prescribed,  int,    "1",        "prescribed",      PF_WRITE | PF_RESTART | PF_MIGRATE)    \
     /* coupling: the fluid cell of the centre at the last exchange (-1: outside the mesh) */   \
     X(fluid_cell,  int,    "1",        "fluid_cell",      0)                                     \
     /* coupling: the fluid force is beta (u_fluid - v) + f_fluid + f_pgrad; beta (0 when      \
@@ -128,6 +134,8 @@ int dem_particles_add(dem_particles *p, const double x[3], const double v[3], do
                   double density, int type, int64_t id);
 /* Recompute mass, inverse mass and inverse inertia from radius and a per-type density. */
 void dem_particles_set_mass(dem_particles *p, int i, double density);
+/* Particle i moves at its present velocity from now on, without rotation, whatever the forces. */
+void dem_particles_prescribe(dem_particles *p, int i);
 /* Reorder all arrays so that new index k holds old index order[k]. */
 void dem_particles_permute(dem_particles *p, const int *order);
 /* Every field of particle `from` copied onto particle `to` (both within the capacity; the

@@ -75,6 +75,7 @@ long dem_system_setup_with_contacts(dem_system *s, const dem_contact_store *save
         s->nlist.skin = s->p.n ? 0.2 * rmin : 1e-3;   /* 10 % of the smallest diameter */
     }
     prepare_models(s);
+    dem_walls_move(s, s->time);
     dem_neighbour_rebuild(s);
     dem_walls_build_candidates(s);
     const long found = saved ? dem_contacts_scatter(s, saved) : 0;
@@ -175,7 +176,8 @@ static int kick_drift_reset(dem_system *s)
 void dem_system_step(dem_system *s)
 {
     dem_particles *p = &s->p;
-    if (kick_drift_reset(s)) rebuild(s);
+    const int moved_far = kick_drift_reset(s);
+    if (dem_walls_move(s, s->time + s->dt) || moved_far) rebuild(s);   /* walls at the end of the step */
     add_contact_forces(s);
     half_kick(p, s->dt);
     s->time += s->dt;

@@ -42,6 +42,53 @@ int dem_wall_gap(const dem_wall *w, const double x[3], double radius, double *ga
     return 1;
 }
 
+void dem_wall_set_velocity(dem_wall *w, const double velocity[3])
+{
+    for (int d = 0; d < 3; d++) {
+        w->velocity[d] = velocity[d];
+        w->point0[d] = w->point[d];
+        w->bounds0_min[d] = w->bounds_min[d];
+        w->bounds0_max[d] = w->bounds_max[d];
+    }
+}
+
+static int translates(const dem_wall *w)
+{
+    return w->kind == WALL_PLANE && (w->velocity[0] != 0.0 || w->velocity[1] != 0.0 || w->velocity[2] != 0.0);
+}
+
+int dem_walls_move(dem_system *s, double t)
+{
+    const double limit = 0.25 * s->nlist.skin * s->nlist.skin;
+    int far = 0;
+    for (int k = 0; k < s->nwalls; k++) {
+        dem_wall *w = &s->walls[k];
+        if (!translates(w)) continue;
+        double moved = 0.0;
+        for (int d = 0; d < 3; d++) {
+            const double shift = w->velocity[d] * t;
+            w->point[d] = w->point0[d] + shift;
+            w->bounds_min[d] = w->bounds0_min[d] + shift;
+            w->bounds_max[d] = w->bounds0_max[d] + shift;
+            moved += (w->point[d] - w->point_at_build[d]) * (w->point[d] - w->point_at_build[d]);
+        }
+        far |= moved > limit;
+    }
+    return far;
+}
+
+void dem_wall_surface_velocity(const dem_wall *w, const double xc[3], double u[3])
+{
+    if (w->kind == WALL_PLANE) {
+        for (int d = 0; d < 3; d++) u[d] = w->velocity[d];
+        return;
+    }
+    const int a = w->axis, b = (a + 1) % 3, c = (a + 2) % 3;   /* omega e_a x (xc - axis) */
+    u[a] = 0.0;
+    u[b] = -w->angular_velocity * (xc[c] - w->centre[1]);
+    u[c] = w->angular_velocity * (xc[b] - w->centre[0]);
+}
+
 dem_wall *dem_walls_add(dem_system *s)
 {
     if (s->nwalls == s->wall_capacity) {
@@ -76,6 +123,7 @@ void dem_walls_build_candidates(dem_system *s)
     const double range = s->nlist.skin + s->contact_reach;
     for (int k = 0; k < s->nwalls; k++) {
         dem_wall_contacts *wc = &s->wall_lists[k];
+        for (int d = 0; d < 3; d++) s->walls[k].point_at_build[d] = s->walls[k].point[d];
         /* bounded walls: test with the bounds widened by the range, cheaply, by testing the
          * position itself and letting the force loop decide the exact bounds */
         dem_wall probe = s->walls[k];
@@ -106,9 +154,10 @@ void dem_walls_build_candidates(dem_system *s)
     }
 }
 
-/* Wall contacts see the wall as a sphere of infinite radius and mass at rest: R* = R_i,
- * m* = m_i, omega_j = 0; the contact is evaluated as a pair's (contact/evaluate.h), with the
- * same history layout. */
+/* Wall contacts see the wall as a sphere of infinite radius and mass: R* = R_i, m* = m_i; its
+ * surface velocity at the contact point is subtracted from the particle's (a moving wall), and a
+ * turning cylinder's angular velocity is omega_j (for the rolling models; its lever is 0); the
+ * contact is evaluated as a pair's (contact/evaluate.h), with the same history layout. */
 static ALWAYS_INLINE void wall_loop(dem_system *s, const int normal, const int tangential, const int cohesion,
                                     const int rolling, const int surface)
 {
@@ -123,6 +172,7 @@ static ALWAYS_INLINE void wall_loop(dem_system *s, const int normal, const int t
     for (int q = 0; q < s->nwalls; q++) {
         const dem_wall *wl = &s->walls[q];
         dem_wall_contacts *wc = &s->wall_lists[q];
+        const int moving = translates(wl) || (wl->kind == WALL_CYLINDER && wl->angular_velocity != 0.0);
         for (int m = 0; m < wc->n; m++) {
             const int i = wc->particle[m];
             double *h = wc->history + (size_t)m * hs;
@@ -145,6 +195,13 @@ static ALWAYS_INLINE void wall_loop(dem_system *s, const int normal, const int t
                 k.vr[d] = p->v[i][d];
                 k.wi[d] = p->omega[i][d];
                 k.wj[d] = 0.0;
+            }
+            if (moving) {
+                double xc[3], u[3];
+                for (int d = 0; d < 3; d++) xc[d] = p->x[i][d] - k.lever_i * k.en[d];   /* contact point */
+                dem_wall_surface_velocity(wl, xc, u);
+                for (int d = 0; d < 3; d++) k.vr[d] -= u[d];
+                if (wl->kind == WALL_CYLINDER) k.wj[wl->axis] = wl->angular_velocity;
             }
             k.a2 = needs_radius ? contact_radius_sq_wall(ri, k.delta) : 0.0;
             if (rolling != rolling_none) {

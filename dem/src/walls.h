@@ -1,7 +1,13 @@
-/* Static walls: planes (infinite or bounded), and cylinders (particles inside or outside).
+/* Walls: planes (infinite or bounded), and cylinders (particles inside or outside).
  * An axis-aligned box wall is expanded into six bounded planes when the case is read.
  * Wall contacts use the same normal/tangential models as particle pairs, with R_j and m_j
- * taken as infinite (R* = R_i, m* = m_i). */
+ * taken as infinite (R* = R_i, m* = m_i).
+ * Moving walls: a plane (or box) translates at a constant velocity, its position a function of
+ * the time (point(t) = point(0) + velocity t, so a restart puts it back exactly); a cylinder
+ * turns about its own axis at a constant angular velocity (its shape does not change, only its
+ * surface moves). The wall's surface velocity at the contact point enters the contact's relative
+ * velocity (tangential history, damping) and a turning cylinder's angular velocity the rolling
+ * models' relative rotation. */
 #ifndef DEM_WALLS_H
 #define DEM_WALLS_H
 
@@ -21,6 +27,11 @@ typedef struct dem_wall {
     double radius;
     int inside;                            /* particles inside (1) or outside (0) */
     double axial_min, axial_max;           /* extent along the axis */
+    /* motion */
+    double velocity[3];                    /* plane: translation [m/s] */
+    double angular_velocity;               /* cylinder: about its axis, right-handed [rad/s] */
+    double point0[3], bounds0_min[3], bounds0_max[3];   /* plane at t = 0 (dem_wall_set_velocity) */
+    double point_at_build[3];              /* where the candidate list was built */
 } dem_wall;
 
 /* The particles within radius + skin (+ the normal model's reach) of one wall, refreshed at each
@@ -41,6 +52,14 @@ void dem_walls_add_forces(struct dem_system *s);
 /* Refresh each wall's list of particles within radius + skin (after a neighbour build); the
  * histories start at zero (contacts.c puts back those of continuing contacts). */
 void dem_walls_build_candidates(struct dem_system *s);
+/* A translating plane: velocity [m/s]; the wall's present point and bounds are its t = 0 ones. */
+void dem_wall_set_velocity(dem_wall *w, const double velocity[3]);
+/* Place the translating walls at time t; returns 1 if one has moved more than half the skin
+ * since its candidate list was built (the lists must then be rebuilt). */
+int dem_walls_move(struct dem_system *s, double t);
+/* The wall's surface velocity at point xc [m/s]. */
+void dem_wall_surface_velocity(const dem_wall *w, const double xc[3], double u[3]);
+
 /* Signed gap from a sphere surface to the wall (negative: overlap) and the unit normal from the
  * wall to the centre; returns 0 if the wall does not act at this position (outside bounds). */
 int dem_wall_gap(const dem_wall *w, const double x[3], double radius, double *gap, double en[3]);
