@@ -42,7 +42,7 @@ static void read_materials(const dem_dict *root, dem_system *s)
             for (int k = 0; k < 3; k++)
                 if (dem_dict_has(m, unused[k]))
                     dem_dict_fatal(m, unused[k], "a rigid material adds no compliance and has no mass: remove '%s' "
-                                   "(or 'rigid true' for an elastic wall)", unused[k]);
+                                   "(or drop 'rigid true' for an elastic wall)", unused[k]);
             mat->youngs_modulus = INFINITY;
             mat->poisson_ratio = 0.0;
             mat->density = 0.0;

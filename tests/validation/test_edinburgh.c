@@ -62,6 +62,12 @@
  *     pull (below 0); (c) the non-adhesive impact of the LIGGGHTS comparison (kappa21 = 5,
  *     gamma_s = 0, e = 0.9, 0.1 m/s) rebounds by default, with e between 0.05 and the plastic-
  *     only e (printed: with eq. 8 and limitForce off the pair stays held).
+ *  9. trace 1's path (0 -> delta1 -> 0.05 delta1 -> 1.5 delta1 -> 0) driven through the time
+ *     steps by prescribed motion (both spheres prescribed, one at rest, the other at a constant
+ *     speed per leg, 4000 steps a leg, e = 1): every point within 1 % of the closed form (points
+ *     below 1e-6 of the peak load left out), through the adhesive branch (the first unloading's
+ *     tensile peak within 1 % of -F_min(a(delta*))) and back up; the prescribed spheres keep their
+ *     velocities exactly.
  */
 #include <stdlib.h>
 #include <time.h>
@@ -664,6 +670,59 @@ static void limit_force_keeps_adhesion(void)
     check_true("non-adhesive impact: 0.05 < e < plastic-only e", def.restitution > 0.05 && def.restitution < e_pl);
 }
 
+static void trace_prescribed(void)
+{
+    printf("\n9. trace 1 driven by prescribed motion (dem_system_step)\n");
+    const double d1 = 2e-6;
+    const dem_edinburgh_params mp = edin_params(5.0, 4.0, 1.5, 1.0);
+    const ref_model m = ref_make(&mp, 0);
+    dem_system s;
+    make_system(&s, E_MOD, NU, RHO, 1.0, 0.0, normal_edinburgh, tangential_none, 0.01);
+    dem_materials_set_model_values(&s.materials, 0, 0, SLOT_NORMAL, &mp, sizeof mp);
+    s.nlist.skin = 0.5 * RAD;
+    add_sphere(&s, 0, 0, 0, 0, 0, 0, RAD);
+    add_sphere(&s, 2.0 * RAD, 0, 0, 0, 0, 0, RAD);
+    dem_particles_prescribe(&s.p, 0);
+    dem_particles_prescribe(&s.p, 1);
+    s.dt = 1e-7;
+    dem_system_setup(&s);
+    const double targets[] = {d1, 0.05 * d1, 1.5 * d1, 0.0};
+    const int n = 4000;
+    const double fpeak = ref_load(&m, 1.5 * d1);
+    double delta = 0.0, dmax = 0.0, worst = 0.0, fmin = 0.0, worst_at = 0.0;
+    int count = 0, kept = 1;
+    for (int leg = 0; leg < 4; leg++) {
+        const double speed = (targets[leg] - delta) / (n * s.dt);
+        s.p.v[1][0] = -speed;
+        for (int k = 0; k < n; k++) {
+            dem_system_step(&s);
+            kept &= s.p.v[1][0] == -speed && s.p.v[0][0] == 0.0;
+            const int i0 = s.p.id[0] == 0 ? 0 : 1, i1 = 1 - i0;   /* (no sort in 16000 steps, but by id) */
+            delta = 2.0 * RAD - (s.p.x[i1][0] - s.p.x[i0][0]);
+            if (delta <= 0.0) continue;
+            dmax = fmax(dmax, delta);
+            const double f = 0.5 * (s.p.f[i1][0] - s.p.f[i0][0]);
+            if (leg == 1) fmin = fmin < f ? fmin : f;   /* the first unloading, as in trace 1 */
+            const double fr = ref_force(&m, delta, dmax);
+            if (fabs(fr) < 1e-6 * fpeak) continue;
+            count++;
+            const double e = fabs(f - fr) / fabs(fr);
+            if (e > worst) { worst = e; worst_at = delta; }
+        }
+    }
+    double fmin_star, dmin_star;
+    int clamped;
+    const double dp1 = m.lam * d1;
+    ref_fmin(&m, ref_dstar(&m, dp1), dp1, &fmin_star, &dmin_star, &clamped);
+    printf("   %d points compared, worst relative error %.3g at delta = %.4g m; tensile peak of the first unloading %.6g N "
+           "(closed form %.6g N)\n", count, worst, worst_at, fmin, -fmin_star);
+    check_rel("prescribed-motion trace: worst point vs closed form (1 + error vs 1)", 1.0 + worst, 1.0, 0.01);
+    check_rel("prescribed-motion trace: tensile peak = -F_min(a(delta*))", fmin, -fmin_star, 0.01);
+    check_true("prescribed-motion trace: the spheres kept their prescribed velocities", kept);
+    check_true("prescribed-motion trace: more than 10000 points compared", count > 10000);
+    dem_system_free(&s);
+}
+
 int main(void)
 {
     struct timespec t0, t1;
@@ -676,6 +735,7 @@ int main(void)
     impact_speed();
     impact_default_damping();
     limit_force_keeps_adhesion();
+    trace_prescribed();
     clock_gettime(CLOCK_MONOTONIC, &t1);
     printf("run time %.2f s\n", (t1.tv_sec - t0.tv_sec) + 1e-9 * (t1.tv_nsec - t0.tv_nsec));
     return finish("test_edinburgh");
