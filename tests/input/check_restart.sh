@@ -6,7 +6,9 @@
 #     restart ends: positions within 1e-9 m (radius 1e-3 m; measured: identical). That needs the
 #     contact history (tangential springs of the resting contacts) and the last forces saved and
 #     restored with the snapshot; recomputing the forces at the restart instead (which adds that
-#     step's tangential increment twice) moved the bed by 3e-7 m.
+#     step's tangential increment twice) moved the bed by 3e-7 m;
+#  3. the same with the box translating at 5 mm/s in x (a moving wall: its position follows the
+#     time, so the restarted run puts it back where the straight run has it): within 1e-9 m.
 # Usage: check_restart.sh <demRun>
 demRun=$1
 here=$(cd "$(dirname "$0")" && pwd)
@@ -32,6 +34,14 @@ run "$work/split"
 sed -i 's/^endTime        0.15;/endTime        0.16;/' "$work/split/constant/demProperties"
 run "$work/split" -restart
 
+moving() { sed -i 's/material glass; } }/material glass; velocity (0.005 0 0); } }/' "$1/constant/demProperties"; }
+make_case "$work/mstraight" 0.16 0.01; moving "$work/mstraight"
+run "$work/mstraight"
+make_case "$work/msplit" 0.15 0.01; moving "$work/msplit"
+run "$work/msplit"
+sed -i 's/^endTime        0.15;/endTime        0.16;/' "$work/msplit/constant/demProperties"
+run "$work/msplit" -restart
+
 /usr/bin/python3 - "$work" <<'PY'
 import sys, h5py, numpy as np
 work = sys.argv[1]
@@ -51,6 +61,11 @@ t_b, xb, last_b = final(f"{work}/split/particles.h5")
 diff = np.abs(xa - xb).max()
 pairs = last_b["contacts/keys"].shape[0] if "contacts" in last_b else 0
 print(f"settled bed: {pairs} contacts saved; largest position difference restart vs straight run {diff:.3g} m")
+t_ma, xma, _ = final(f"{work}/mstraight/particles.h5")
+t_mb, xmb, _ = final(f"{work}/msplit/particles.h5")
+mdiff = np.abs(xma - xmb).max()
+moved = np.abs(xma[:, 0] - final(f"{work}/straight/particles.h5")[1][:, 0]).max()
+print(f"moving box: particles displaced up to {moved:.3g} m in x by the moving walls; largest difference restart vs straight {mdiff:.3g} m")
 checks = [
     ("restart message names t = 0.01 s", "restart from" in log and "t = 0.01 s" in log),
     ("snapshots 0, 0.005, 0.01 then 0.015, 0.02 s", np.allclose(times, [0, 0.005, 0.01, 0.015, 0.02], atol=1e-12)),
@@ -59,6 +74,8 @@ checks = [
     ("snapshots hold the contact history", pairs > 100),
     ("settled bed: restarted run ends at the same time", abs(t_a - t_b) < 1e-12),
     ("settled bed: positions as without restart (1e-9 m)", diff < 1e-9),
+    ("moving box: the walls moved the bed (> 1e-4 m in x)", moved > 1e-4),
+    ("moving box: positions as without restart (1e-9 m)", abs(t_ma - t_mb) < 1e-12 and mdiff < 1e-9),
 ]
 failed = 0
 for name, ok in checks:
