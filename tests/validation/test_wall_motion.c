@@ -20,7 +20,12 @@
  *     then rolls up the drum as a rolling pendulum, s'' = -(5/7) g s / (R_d - r): at 3 t*,
  *     v = v* cos(W 2t*) - s* W sin(W 2t*), W = sqrt(5 g / (7 (R_d - r))), s* = mu g t*^2 / 2 (the
  *     slip distance), and omega = (U - v) / r (no slip on the drum's surface); within 1 %.
- *  5. A restart halfway through 3 (wall position from the time) continues it exactly. */
+ *  5. A restart halfway through 3 (wall position from the time) continues it exactly.
+ *  6. The wall's motion in the tangential and rolling models: a sphere turning with the drum as
+ *     one rigid body (centre velocity Omega x x, spin Omega; Hertz + history + rolling cdt,
+ *     mu_r = 0.1) feels no tangential force and no torque (below 1e-12 of F_n and F_n r); the same
+ *     sphere against the drum at rest slides and spins against it: Coulomb's and cdt's torques
+ *     together, (mu + mu_r) F_n (r - delta/2), within 1e-12. */
 #include "harness.h"
 #include "restart.h"
 
@@ -244,6 +249,46 @@ static void restart_exact(void)
     dem_system_free(&c);
 }
 
+static void corotating(void)
+{
+    const double omega = 2.0, delta = 1e-6;
+    double torque[2], ft[2], fn[2];
+    for (int turning = 1; turning >= 0; turning--) {
+        dem_system s;
+        make_system(&s, 1e7, 0.3, 2500, 0.5, MU, normal_hertz, tangential_history, 1.0);
+        add_rigid_material(&s, 0.5, MU);
+        s.models.rolling = rolling_cdt;
+        const dem_cdt_params cp = {0.1};
+        dem_materials_set_model_values(&s.materials, 0, 1, SLOT_ROLLING, &cp, sizeof cp);
+        dem_wall *w = dem_walls_add(&s);
+        snprintf(w->name, sizeof w->name, "drum");
+        w->material = 1;
+        w->kind = WALL_CYLINDER;
+        w->axis = 0;
+        w->radius = R_DRUM;
+        w->inside = 1;
+        w->axial_min = -INFINITY;
+        w->axial_max = INFINITY;
+        w->angular_velocity = turning ? omega : 0.0;
+        const double z = -(R_DRUM - R_SPH + delta);
+        add_sphere(&s, 0, 0, z, 0, -omega * z, 0, R_SPH);   /* Omega e_x x (0, 0, z) */
+        s.p.omega[0][0] = omega;
+        s.dt = 1e-6;
+        s.nlist.skin = 0.1 * R_SPH;
+        dem_system_setup(&s);   /* computes the forces */
+        fn[turning] = s.p.f[0][2];
+        ft[turning] = sqrt(s.p.f[0][0] * s.p.f[0][0] + s.p.f[0][1] * s.p.f[0][1]);
+        torque[turning] = sqrt(s.p.torque[0][0] * s.p.torque[0][0] + s.p.torque[0][1] * s.p.torque[0][1] +
+                               s.p.torque[0][2] * s.p.torque[0][2]);
+        dem_system_free(&s);
+    }
+    printf("6. sphere turning with the drum: |F_t| %.3g N, |M| %.3g N m (F_n %.6g N); against the drum at rest "
+           "|M| %.6g N m\n", ft[1], torque[1], fn[1], torque[0]);
+    check_true("co-rotating with the drum: no tangential force (< 1e-12 F_n)", ft[1] < 1e-12 * fn[1]);
+    check_true("co-rotating with the drum: no rolling torque (< 1e-12 F_n r)", torque[1] < 1e-12 * fn[1] * R_SPH);
+    check_rel("drum at rest: torque (mu + mu_r) F_n (r - delta/2)", torque[0], (MU + 0.1) * fn[0] * (R_SPH - 0.5 * delta), 1e-12);
+}
+
 int main(void)
 {
     chung_ooi_2();
@@ -251,5 +296,6 @@ int main(void)
     rolling(0);
     rolling(1);
     restart_exact();
+    corotating();
     return finish("test_wall_motion");
 }
