@@ -125,7 +125,9 @@ int main(int argc, char **argv)
         }
     } else {
         const long nsteps = (long)llround((rs.end_time - s.time) / s.dt);
-        const long write_every = rs.write_interval > 0 ? (long)fmax(1.0, llround(rs.write_interval / s.dt)) : 0;
+        /* a writeInterval longer than the run: the final state only (in double: 1e9 / 1e-12 is no long) */
+        const double per_write = rs.write_interval / s.dt;
+        const long write_every = rs.write_interval > 0 && per_write < (double)nsteps ? (long)fmax(1.0, llround(per_write)) : 0;
         printf("running %ld steps of %g s to t = %g s, %d particles\n", nsteps, s.dt, rs.end_time, s.p.n);
         run_steps(&s, nsteps, write_every, w, rs.progress_interval);
         total_steps = nsteps;

@@ -16,10 +16,15 @@ static void read_domain(const dem_dict *root, dem_system *s)
     dem_dict_vector(d, "min", s->domain_min);
     dem_dict_vector(d, "max", s->domain_max);
     dem_dict_bools3_opt(d, "periodic", s->periodic, 0);
-    for (int k = 0; k < 3; k++)
+    for (int k = 0; k < 3; k++) {
         if (!(s->domain_max[k] > s->domain_min[k]))
             dem_dict_fatal(d, "max", "max must exceed min in every direction (%c: min %g, max %g)",
                        "xyz"[k], s->domain_min[k], s->domain_max[k]);
+        /* the cells and the insertion grid divide the length: it must be a number (1e308 - -1e308 is not) */
+        if (!(isfinite(s->domain_min[k]) && isfinite(s->domain_max[k]) && isfinite(s->domain_max[k] - s->domain_min[k])))
+            dem_dict_fatal(d, "max", "the domain's length in %c (max %g - min %g) is not a finite number",
+                       "xyz"[k], s->domain_max[k], s->domain_min[k]);
+    }
     for (int k = 0; k < 3; k++) {   /* as system_setup_begin: the insertions' overlap checks need it */
         s->period[k] = s->periodic[k] ? s->domain_max[k] - s->domain_min[k] : 0.0;
         s->inv_period[k] = s->periodic[k] ? 1.0 / s->period[k] : 0.0;
@@ -458,6 +463,10 @@ void dem_case_read(const char *case_dir, dem_system *s, dem_run_settings *rs, in
     s->dt = dem_dict_scalar(root, "timeStep", 1e-12, 1.0);
     snprintf(rs->timestep_source, sizeof rs->timestep_source, "%s:%d", rs->dict_path, dem_dict_key_line(root, "timeStep"));
     rs->end_time = dem_dict_scalar(root, "endTime", 0.0, 1e9);
+    /* the step counter is a long; far below its range, a run this long would never end anyway */
+    if (rs->end_time / s->dt > 1e13)
+        dem_dict_fatal(root, "endTime", "endTime / timeStep = %g steps: more than 1e13 steps (%g s / %g s); "
+                       "shorten endTime or lengthen timeStep", rs->end_time / s->dt, rs->end_time, s->dt);
     rs->write_interval = dem_dict_scalar_opt(root, "writeInterval", 0.0, 0.0, 1e9);
     rs->progress_interval = dem_dict_scalar_opt(root, "progressInterval", 5.0, 0.0, 1e6);
     const double zero[3] = {0, 0, 0};

@@ -47,6 +47,8 @@ struct dem_dict {
     const dem_dict *parent;  /* for messages: "demProperties/materials/glass" */
     entry *ent;
     int n, cap;
+    int *slot;           /* hash index of ent by key: entry number or -1; nslot a power of two */
+    int nslot;           /* (a linear search per key made N keys cost N^2: 100,000 took minutes) */
     char **asked;        /* every key an accessor asked for, for suggestions */
     int nasked, capasked;
 };
@@ -323,11 +325,38 @@ static void entry_clear(entry *e)
     memset(e, 0, sizeof *e);
 }
 
+static size_t key_hash(const char *key)   /* FNV-1a */
+{
+    size_t h = 1469598103934665603ULL;
+    for (const unsigned char *c = (const unsigned char *)key; *c; c++) h = (h ^ *c) * 1099511628211ULL;
+    return h;
+}
+
 static entry *find(const dem_dict *d, const char *key)
 {
-    for (int i = 0; i < d->n; i++)
+    if (d->nslot == 0) return NULL;
+    for (size_t k = key_hash(key) & (size_t)(d->nslot - 1);; k = (k + 1) & (size_t)(d->nslot - 1)) {
+        const int i = d->slot[k];
+        if (i < 0) return NULL;
         if (strcmp(d->ent[i].key, key) == 0) return &d->ent[i];
-    return NULL;
+    }
+}
+
+/* Index entry i (its key not yet indexed); the index is kept at most half full. */
+static void index_entry(dem_dict *d, int i)
+{
+    if (2 * (d->n + 1) > d->nslot) {
+        free(d->slot);
+        d->nslot = d->nslot ? 2 * d->nslot : 16;
+        while (2 * (d->n + 1) > d->nslot) d->nslot *= 2;
+        d->slot = dem_malloc((size_t)d->nslot * sizeof *d->slot);
+        for (int k = 0; k < d->nslot; k++) d->slot[k] = -1;
+        for (int j = 0; j < d->n; j++)
+            if (j != i) index_entry(d, j);
+    }
+    size_t k = key_hash(d->ent[i].key) & (size_t)(d->nslot - 1);
+    while (d->slot[k] >= 0) k = (k + 1) & (size_t)(d->nslot - 1);
+    d->slot[k] = i;
 }
 
 /* Takes ownership of key. A repeated key replaces the earlier entry (OpenFOAM: the
@@ -344,6 +373,8 @@ static entry *add_entry(dem_dict *d, char *key, const char *file, int line)
         }
         e = &d->ent[d->n++];
         memset(e, 0, sizeof *e);
+        e->key = key;
+        index_entry(d, d->n - 1);
     }
     e->key = key;
     e->file = xstrdup(file);
@@ -525,6 +556,7 @@ void dem_dict_free(dem_dict *d)
     if (!d) return;
     for (int i = 0; i < d->n; i++) entry_clear(&d->ent[i]);
     free(d->ent);
+    free(d->slot);
     for (int i = 0; i < d->nasked; i++) free(d->asked[i]);
     free(d->asked);
     free(d->name);

@@ -32,11 +32,27 @@ double dem_insertion_draw_diameter(const dem_insertion *ins, dem_rng *r)
     switch (ins->dist) {
     case SIZE_CONSTANT: return ins->d_value;
     case SIZE_UNIFORM: return ins->d_min + (ins->d_max - ins->d_min) * rng_uniform(r);
-    case SIZE_NORMAL:
-        for (;;) {   /* truncated normal by rejection; the range was checked to hold mass */
-            const double d = ins->d_mean + ins->d_std * rng_normal(r);
-            if (d >= ins->d_min && d <= ins->d_max) return d;
+    case SIZE_NORMAL: {
+        /* truncated normal: by rejection where [min, max] holds at least 1 % of the normal's
+         * mass (fewer than 100 draws on average), else by inverting its distribution function
+         * (bisection): rejection alone never ends when min = max or stdDev is 0 */
+        if (ins->d_std == 0.0 || ins->d_max == ins->d_min) return ins->d_std == 0.0 ? ins->d_mean : ins->d_min;
+        const double a = (ins->d_min - ins->d_mean) / ins->d_std, b = (ins->d_max - ins->d_mean) / ins->d_std;
+        const double pa = 0.5 * erfc(-a / M_SQRT2), pb = 0.5 * erfc(-b / M_SQRT2);
+        if (pb - pa >= 0.01)
+            for (;;) {
+                const double d = ins->d_mean + ins->d_std * rng_normal(r);
+                if (d >= ins->d_min && d <= ins->d_max) return d;
+            }
+        const double u = pa + (pb - pa) * rng_uniform(r);
+        double lo = a, hi = b;
+        for (int it = 0; it < 100; it++) {
+            const double mid = 0.5 * (lo + hi);
+            if (0.5 * erfc(-mid / M_SQRT2) < u) lo = mid;
+            else hi = mid;
         }
+        return ins->d_mean + ins->d_std * 0.5 * (lo + hi);
+    }
     case SIZE_DISCRETE: {
         double total = 0.0;
         for (int k = 0; k < ins->ndiscrete; k++) total += ins->d_weights[k];

@@ -30,8 +30,14 @@ static void wrap_and_check_domain(dem_system *s)
         for (int d = 0; d < 3; d++) {
             double *xd = &p->x[i][d];
             if (s->periodic[d]) {
-                while (*xd < s->domain_min[d]) *xd += s->period[d];
-                while (*xd >= s->domain_max[d]) *xd -= s->period[d];
+                if (!(*xd >= s->domain_min[d] && *xd < s->domain_max[d])) {   /* one shift, however far */
+                    if (!isfinite(*xd))
+                        dem_fatal("particle id %lld has a position that is not a number at t = %g s (step %ld)",
+                                  (long long)p->id[i], s->time, s->step);
+                    *xd -= floor((*xd - s->domain_min[d]) / s->period[d]) * s->period[d];
+                    if (*xd >= s->domain_max[d]) *xd -= s->period[d];   /* round-off at the sides */
+                    if (*xd < s->domain_min[d]) *xd = s->domain_min[d];
+                }
             } else if (*xd < s->domain_min[d] - p->radius[i] || *xd > s->domain_max[d] + p->radius[i]) {
                 dem_fatal("particle id %lld left the domain at t = %g s (step %ld): position "
                           "(%g %g %g) m, domain min (%g %g %g) max (%g %g %g) m. Close the domain "

@@ -26,8 +26,34 @@ void dem_system_free(dem_system *s)
 }
 
 /* A new neighbour list and wall lists, the contacts' history carried across by particle ids. */
+/* A particle that moves more than half its radius in one step can pass through a contact or a
+ * wall unseen. The lists are rebuilt as soon as one particle has moved half the skin since the
+ * last build, so at a rebuild every particle had moved less than that up to the step before: one
+ * that has now moved more than half the skin plus half its radius moved more than half its radius
+ * in this one step. */
+static void check_step_motion(const dem_system *s)
+{
+    const dem_particles *p = &s->p;
+    const dem_vec3 *x0 = s->nlist.x_at_build;
+    const int listed = p->n < s->nlist.rows ? p->n : s->nlist.rows;
+    for (int i = 0; i < listed; i++) {
+        const double dx = p->x[i][0] - x0[i][0], dy = p->x[i][1] - x0[i][1], dz = p->x[i][2] - x0[i][2];
+        const double lim = 0.5 * (s->nlist.skin + p->radius[i]);
+        if (!(dx * dx + dy * dy + dz * dz <= lim * lim)) {
+            const double *v = p->v[i], speed = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+            dem_fatal("particle id %lld moved more than half its radius (%g m) in the step to t = %g s (step "
+                      "%ld): its speed %g m/s carries it %g m per step of %g s, so it can pass through "
+                      "contacts and walls unseen. Lower timeStep below %g s, or find what accelerated it "
+                      "(gravity, an insertion velocity, a soft material that let it sink into others).",
+                      (long long)p->id[i], p->radius[i], s->time + s->dt, s->step + 1, speed, speed * s->dt, s->dt,
+                      speed > 0.0 ? 0.5 * p->radius[i] / speed : s->dt);
+        }
+    }
+}
+
 static void rebuild(dem_system *s)
 {
+    check_step_motion(s);
     dem_contacts_gather(s, &s->carried);
     dem_neighbour_rebuild(s);
     dem_walls_build_candidates(s);

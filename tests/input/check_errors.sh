@@ -25,16 +25,20 @@ cases=(
   "rigid_particles|s/glass { youngsModulus 5e6; poissonsRatio 0.45; density 2500; }/glass { youngsModulus 5e6; poissonsRatio 0.45; density 2500; } steel { rigid true; }/;s/material glass;$/material steel;/|demProperties:19: error: key 'material'.*rigid: only walls"
   "cylinder_velocity|s/walls { box { type box;.*/walls { drum { type cylinder; axis z; centre (0 0); radius 0.01; material glass; velocity (1 0 0); } }/|demProperties:12: error: key 'velocity'.*angularVelocity"
   "prescribed_and_velocity|s/number   200;/number 200; velocity (0 0 1); prescribedVelocity (0 0 1);/|demProperties:18: error: key 'prescribedVelocity'.*not both"
+  "periodic_huge_velocity|s/^domain { min (-0.01 -0.01 0); max (0.01 0.01 0.04); }/domain { min (-0.01 -0.01 0); max (0.01 0.01 0.04); periodic (true false false); }/;s/^walls.*/walls { floor { type plane; point (0 0 0); normal (0 0 1); material glass; } }/;s/number   200;/number 200; velocity (1e20 0 0);/;s/^timeStep       1e-5;/timeStep 1e-5; timeStepOverride true;/|error: particle id [0-9]+ moved more than half its radius"
+  "through_the_wall|s/number   200;/number 200; velocity (0 0 -1e4);/;s/^timeStep       1e-5;/timeStep 1e-5; timeStepOverride true;/|error: particle id [0-9]+ moved more than half its radius.*Lower timeStep"
+  "domain_not_finite|s/max (0.01 0.01 0.04); }$/max (0.01 0.01 1e308); }/;s/^domain { min (-0.01 -0.01 0);/domain { min (-0.01 -0.01 -1e308);/|demProperties:8: error: key 'max'.*not a finite number"
+  "step_count_overflow|s/^endTime        0.02;/endTime        1e9;/;s/^timeStep       1e-5;/timeStep 1e-12;/|demProperties:4: error: key 'endTime'.*more than 1e13 steps"
   "sjkr_without_energy|s/tangential history; }/tangential history; cohesion sjkr; }/|demProperties:11: error: .*cohesionEnergyDensity"
   "roughness_angle|s/tangential history; }/tangential history; surface roughness; roughness { distribution uniform; max 2; } }/|demProperties:10: error: key 'max'"
-  "blow_up|s/^timeStep       1e-5;/timeStep       5e-4; timeStepOverride true; endTime 1;/;/^endTime /d|blew up|left the domain"
+  "blow_up|s/^timeStep       1e-5;/timeStep       5e-4; timeStepOverride true; endTime 1;/;/^endTime /d|blew up|left the domain|moved more than half its radius"
 )
 for c in "${cases[@]}"; do
     IFS='|' read -r name expr expect <<< "$c"
     mkdir -p "$work/$name/constant"
     sed -e "$expr" "$here/base.demProperties" > "$work/$name/constant/demProperties"
-    "$demRun" "$work/$name" > "$work/$name.out" 2> "$work/$name.err"
-    status=$?
+    timeout 60 "$demRun" "$work/$name" > "$work/$name.out" 2> "$work/$name.err"
+    status=$?   # 124: a hang (timeout)
     if [ $status -eq 1 ] && grep -qE "$expect" "$work/$name.err"; then
         echo "PASS $name: $(grep -m1 -E 'error' "$work/$name.err")"
         passed=$((passed + 1))
@@ -44,5 +48,54 @@ for c in "${cases[@]}"; do
         failed=$((failed + 1))
     fi
 done
+
+# Inputs that are odd but valid must run to the end (exit 0) within the timeout, never hang.
+accepted=(
+  "normal_min_equals_max|s/diameter { distribution constant; value 2e-3; }/diameter { distribution normal; mean 2e-3; stdDev 1e-4; min 2e-3; max 2e-3; }/"
+  "normal_narrow_tail|s/diameter { distribution constant; value 2e-3; }/diameter { distribution normal; mean 2e-3; stdDev 1e-3; min 2e-3; max 2.000001e-3; }/"
+)
+for c in "${accepted[@]}"; do
+    IFS='|' read -r name expr <<< "$c"
+    mkdir -p "$work/$name/constant"
+    sed -e "$expr" -e 's/^endTime        0.02;/endTime        0.001;/' "$here/base.demProperties" > "$work/$name/constant/demProperties"
+    timeout 60 "$demRun" "$work/$name" > "$work/$name.out" 2> "$work/$name.err"
+    status=$?
+    if [ $status -eq 0 ] && grep -q "^done:" "$work/$name.out"; then
+        echo "PASS $name: runs ($(grep -m1 '^insertion' "$work/$name.out"))"
+        passed=$((passed + 1))
+    else
+        echo "FAIL $name: exit status $status (124: hang), expected a finished run"
+        sed 's/^/    /' "$work/$name.err" | head -5
+        failed=$((failed + 1))
+    fi
+done
+# 100,000 distinct unknown keys: reported at once (a linear search per key made this N^2: minutes)
+name=many_unknown_keys
+mkdir -p "$work/$name/constant"
+{ cat "$here/base.demProperties"; seq 0 99999 | sed 's/.*/k& 1;/'; } > "$work/$name/constant/demProperties"
+start=$(date +%s.%N)
+timeout 20 "$demRun" "$work/$name" > "$work/$name.out" 2> "$work/$name.err"
+status=$?
+secs=$(awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN { printf "%.2f", b - a }')
+if [ $status -eq 1 ] && grep -q "demProperties:23: error: unknown key 'k0'" "$work/$name.err"; then
+    echo "PASS $name: demProperties:23 named in ${secs} s"; passed=$((passed + 1))
+else
+    echo "FAIL $name: exit status $status (124: over 20 s)"; failed=$((failed + 1))
+fi
+
+# writeInterval far longer than the run (1e9 s / 1e-12 s overflowed the step count into "every
+# step"): the initial and final states only
+name=write_interval_huge
+mkdir -p "$work/$name/constant"
+sed -e 's/^writeInterval  0;/writeInterval  1e9;/' -e 's/^endTime        0.02;/endTime        1e-10;/' \
+    -e 's/^timeStep       1e-5;/timeStep       1e-12;/' "$here/base.demProperties" > "$work/$name/constant/demProperties"
+timeout 60 "$demRun" "$work/$name" > "$work/$name.out" 2> "$work/$name.err"
+status=$?
+nsnap=$(/usr/bin/python3 -c "import h5py, sys; print(len(h5py.File(sys.argv[1], 'r')['snapshots']))" "$work/$name/particles.h5" 2>/dev/null)
+if [ $status -eq 0 ] && [ "$nsnap" = 2 ]; then
+    echo "PASS $name: 100 steps, 2 snapshots (start and end)"; passed=$((passed + 1))
+else
+    echo "FAIL $name: exit status $status, $nsnap snapshots (expected 2)"; failed=$((failed + 1))
+fi
 echo "bad input: $passed passed, $failed failed"
 [ $failed -eq 0 ]

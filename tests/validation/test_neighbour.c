@@ -112,7 +112,9 @@ static void history_survives(int flip)
         if (pass == 1) {   /* force a rebuild with sorting: pretend everything moved since the build */
             s.nlist.builds = 0;
             s.nlist.sort_interval = 1;
-            for (int i = 0; i < s.p.n; i++) s.nlist.x_at_build[i][0] += 1.0;
+            /* (0.6 skin: past the half skin that triggers a build, short of the check that a
+             * particle did not jump half its radius in one step) */
+            for (int i = 0; i < s.p.n; i++) s.nlist.x_at_build[i][0] += 0.6 * s.nlist.skin;
             dem_system_step(&s);
         }
         for (int i = 0; i < s.p.n; i++)
