@@ -62,7 +62,15 @@ dem_timestep_limits dem_timestep_limits_compute(const dem_system *s, double max_
 
 void dem_timestep_check(const dem_system *s, double max_velocity, int override, const char *source)
 {
-    if (s->p.n == 0) return;
+    if (s->p.n == 0) {
+        dem_info("time step %g s: not checked, there are no particles", s->dt);
+        return;
+    }
+    if (!isfinite(max_velocity))   /* no contact time to compare with */
+        dem_fatal_at(source, "key 'timeStep': cannot be checked: the expected impact speed is %g m/s (the "
+                     "fastest particle at the start plus free fall over the domain's height); give "
+                     "maxExpectedVelocity [m/s], or a gravity and domain that give a finite speed",
+                     max_velocity);
     const dem_timestep_limits lim = dem_timestep_limits_compute(s, max_velocity);
     const double fr = s->dt / lim.rayleigh_time, fc = s->dt / lim.contact_time;
     dem_info("time step %g s: %.3f of the Rayleigh time %.3g s (%s; limit %.2f), "

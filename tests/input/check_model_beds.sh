@@ -3,7 +3,8 @@
 # blow-up at the largest time step the core's check allows (taken from the check's own message,
 # times 0.99 for its 3-digit rounding), and at ten times that step demRun stops with a clear
 # message: the time-step check names the key (exit 1), and with timeStepOverride the blow-up
-# detector stops the run (exit 1, "blew up"), never a crash or a NaN.
+# detector stops the run (exit 1: "blew up", or "moved more than half its radius" in one step),
+# never a crash or a NaN.
 # "Settled": mean kinetic energy per particle below that of 2 cm/s after 0.25 s.
 # Usage: check_model_beds.sh <demRun>
 demRun=$1
@@ -86,8 +87,8 @@ for m in "${models[@]}"; do
     write_case "$work/$name.10xo" "$cm" "$inter" "$dt10" "timeStepOverride true;"
     "$demRun" "$work/$name.10xo" > "$work/$name.10xo.out" 2>&1
     status=$?
-    ok=0; [ $status -eq 1 ] && grep -qE "blew up|left the domain" "$work/$name.10xo.out" && ok=1
-    result "$ok" "$name.10x override" "exit $status: $(grep -m1 -oE "(blew up|left the domain).{0,60}" "$work/$name.10xo.out")"
+    ok=0; [ $status -eq 1 ] && grep -qE "blew up|left the domain|moved more than half its radius" "$work/$name.10xo.out" && ok=1
+    result "$ok" "$name.10x override" "exit $status: $(grep -m1 -oE "(blew up|left the domain|moved more than half its radius).{0,60}" "$work/$name.10xo.out")"
 done
 echo "model beds: $passed passed, $failed failed"
 [ $failed -eq 0 ]
