@@ -5,6 +5,7 @@
 
 #include "error.h"
 #include "system.h"
+#include "timestep.h"
 
 void dem_system_init(dem_system *s)
 {
@@ -223,11 +224,29 @@ void dem_system_check_health(const dem_system *s)
                       "material and insertion parameters.",
                       s->time, s->step, (long long)p->id[i], x[0], x[1], x[2], v[0], v[1], v[2]);
     }
-    if (s->max_overlap_seen > s->max_overlap_fraction)
-        dem_fatal("the state blew up at t = %g s (step %ld): a contact overlap reached %.3g of the "
-                  "smaller radius (maxOverlapFraction %g). The time step is too large for these "
-                  "impacts, or particles were inserted overlapping.",
-                  s->time, s->step, s->max_overlap_seen, s->max_overlap_fraction);
+    if (s->max_overlap_seen > s->max_overlap_fraction) {
+        /* which is at fault: the step (too long for the contacts at the present speeds) or the
+         * stiffness (the step resolves the contacts, but they sink in that far under the load) */
+        double v2 = 0.0;
+        for (int i = 0; i < p->n; i++)
+            v2 = fmax(v2, p->v[i][0] * p->v[i][0] + p->v[i][1] * p->v[i][1] + p->v[i][2] * p->v[i][2]);
+        const double vrel = fmax(2.0 * sqrt(v2), 1e-3);   /* head on */
+        const dem_timestep_limits lim = dem_timestep_limits_compute(s, vrel);
+        if (s->dt <= lim.largest_safe_dt)
+            dem_fatal("a contact overlap reached %.3g of the smaller radius at t = %g s (step %ld) (maxOverlapFraction "
+                      "%g). The time step is not the cause: %g s is %.3g of the contact time %.3g s of %s at the "
+                      "present speeds (up to %.3g m/s between two particles). The material is too soft for these "
+                      "impacts and loads: raise youngsModulus, or maxOverlapFraction if such overlaps are meant.",
+                      s->max_overlap_seen, s->time, s->step, s->max_overlap_fraction, s->dt,
+                      s->dt / lim.contact_time, lim.contact_time, lim.contact_pair, vrel);
+        dem_fatal("the state blew up at t = %g s (step %ld): a contact overlap reached %.3g of the smaller "
+                  "radius (maxOverlapFraction %g). The time step %g s is too long for the contacts at the present "
+                  "speeds (up to %.3g m/s between two particles: the largest safe step is %.3g s, from the %s "
+                  "contact time %.3g s): lower timeStep, or find what accelerated the particles (or whether "
+                  "they were inserted overlapping).",
+                  s->time, s->step, s->max_overlap_seen, s->max_overlap_fraction, s->dt, vrel,
+                  lim.largest_safe_dt, lim.contact_pair, lim.contact_time);
+    }
 }
 
 double dem_system_kinetic_energy(const dem_system *s)

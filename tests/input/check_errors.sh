@@ -30,6 +30,7 @@ cases=(
   "domain_not_finite|s/max (0.01 0.01 0.04); }$/max (0.01 0.01 1e308); }/;s/^domain { min (-0.01 -0.01 0);/domain { min (-0.01 -0.01 -1e308);/|demProperties:8: error: key 'max'.*not a finite number"
   "step_count_overflow|s/^endTime        0.02;/endTime        1e9;/;s/^timeStep       1e-5;/timeStep 1e-12;/|demProperties:4: error: key 'endTime'.*more than 1e13 steps"
   "expected_speed_not_finite|s/^domain { min (-0.01 -0.01 0); max (0.01 0.01 0.04); }/domain { min (-0.01 -0.01 0); max (0.01 0.01 1e300); }/;s/^walls.*/walls { floor { type plane; point (0 0 0); normal (0 0 1); material glass; } }/;s/^gravity        (0 0 -9.81);/gravity (0 0 -1e300);/;s/^timeStep       1e-5;/timeStep 1e-5; timeStepOverride true;/|demProperties:3: error: key 'timeStep': cannot be checked.*maxExpectedVelocity"
+  "soft_material|s/youngsModulus 5e6/youngsModulus 1e4/;s/^endTime        0.02;/endTime        0.3;/|error: a contact overlap reached .*The time step is not the cause.*raise youngsModulus"
   "sjkr_without_energy|s/tangential history; }/tangential history; cohesion sjkr; }/|demProperties:11: error: .*cohesionEnergyDensity"
   "roughness_angle|s/tangential history; }/tangential history; surface roughness; roughness { distribution uniform; max 2; } }/|demProperties:10: error: key 'max'"
   "blow_up|s/^timeStep       1e-5;/timeStep       5e-4; timeStepOverride true; endTime 1;/;/^endTime /d|blew up|left the domain|moved more than half its radius"
