@@ -423,6 +423,17 @@ static void run_insertions(const dem_dict *root, dem_system *s, int insert, cons
             for (int k = 0; k < 3; k++)
                 if (ins.region == REGION_BOX && (ins.min[k] < s->domain_min[k] || ins.max[k] > s->domain_max[k]))
                     dem_dict_fatal(dem_dict_sub(e, "region"), "min", "the region must lie inside the domain");
+            if (ins.region != REGION_BOX) {   /* a cylinder: its axial range and its box across the axis */
+                const int a = ins.axis, b = (a + 1) % 3, c = (a + 2) % 3;
+                double lo[3], hi[3];
+                lo[a] = ins.min[a]; lo[b] = ins.centre[0] - ins.radius; lo[c] = ins.centre[1] - ins.radius;
+                hi[a] = ins.max[a]; hi[b] = ins.centre[0] + ins.radius; hi[c] = ins.centre[1] + ins.radius;
+                for (int k = 0; k < 3; k++)
+                    if (lo[k] < s->domain_min[k] || hi[k] > s->domain_max[k])
+                        dem_dict_fatal(dem_dict_sub(e, "region"), k == a ? (lo[k] < s->domain_min[k] ? "axialMin" : "axialMax") : "radius",
+                                       "the cylinder must lie inside the domain: in %c it spans [%g, %g] m, the domain "
+                                       "[%g, %g] m", "xyz"[k], lo[k], hi[k], s->domain_min[k], s->domain_max[k]);
+            }
         }
         if (insert) {   /* skipped on restart: the particles come from the snapshot */
             switch (ins.method) {

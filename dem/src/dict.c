@@ -273,9 +273,11 @@ static const token *lex_peek(lexer *lx)
 
 /* ------------------------------------------------------------------ file reading */
 
-/* Whole file as a NUL-terminated string, or NULL with errno set. */
-static char *read_file(const char *path, const char **why)
+/* Whole file as a NUL-terminated string, or NULL with the reason in *why and, for a NUL byte,
+ * its line in *line (else 0). */
+static char *read_file(const char *path, const char **why, int *line)
 {
+    *line = 0;
     FILE *f = fopen(path, "rb");
     if (!f) { *why = strerror(errno); return NULL; }
     size_t n = 0, cap = 4096;
@@ -295,9 +297,12 @@ static char *read_file(const char *path, const char **why)
         return NULL;
     }
     buf[n] = '\0';
-    if (memchr(buf, '\0', n)) {
+    const char *nul = memchr(buf, '\0', n);
+    if (nul) {
+        *line = 1;
+        for (const char *c = buf; c < nul; c++) *line += *c == '\n';
         free(buf);
-        *why = "file contains NUL bytes (not a text file?)";
+        *why = "a NUL byte (not a text file?)";
         return NULL;
     }
     return buf;
@@ -468,9 +473,11 @@ static void parse_include(lexer *lx, dem_dict *d, int depth, const token *direct
         strcpy(path + dl, f.text);
     }
     const char *why = NULL;
-    char *buf = read_file(path, &why);
+    int bad_line;
+    char *buf = read_file(path, &why, &bad_line);
     if (!buf) {
-        if (if_present) { free(path); free(f.text); return; }
+        if (if_present && !bad_line) { free(path); free(f.text); return; }
+        if (bad_line) fatal_at(path, bad_line, NULL, "included from %s:%d: %s", lx->file, directive->line, why);
         fatal_at(lx->file, directive->line, NULL, "cannot read included file '%s': %s", path, why);
     }
     lexer sub = { path, buf, 0, 1, lx->include_depth + 1, "", 0, { T_EOF, 0, 0, NULL }, 0 };
@@ -541,8 +548,9 @@ static void parse_body(lexer *lx, dem_dict *d, int depth, int braced)
 dem_dict *dem_dict_read(const char *path)
 {
     const char *why = NULL;
-    char *buf = read_file(path, &why);
-    if (!buf) fatal_at(path, 0, NULL, "cannot read dictionary file: %s", why);
+    int bad_line;
+    char *buf = read_file(path, &why, &bad_line);
+    if (!buf) fatal_at(path, bad_line, NULL, "cannot read dictionary file: %s", why);
     const char *slash = strrchr(path, '/');
     dem_dict *d = dict_new(slash ? slash + 1 : path, path, 1, NULL);
     lexer lx = { path, buf, 0, 1, 0, "", 0, { T_EOF, 0, 0, NULL }, 0 };

@@ -31,6 +31,8 @@ cases=(
   "step_count_overflow|s/^endTime        0.02;/endTime        1e9;/;s/^timeStep       1e-5;/timeStep 1e-12;/|demProperties:4: error: key 'endTime'.*more than 1e13 steps"
   "expected_speed_not_finite|s/^domain { min (-0.01 -0.01 0); max (0.01 0.01 0.04); }/domain { min (-0.01 -0.01 0); max (0.01 0.01 1e300); }/;s/^walls.*/walls { floor { type plane; point (0 0 0); normal (0 0 1); material glass; } }/;s/^gravity        (0 0 -9.81);/gravity (0 0 -1e300);/;s/^timeStep       1e-5;/timeStep 1e-5; timeStepOverride true;/|demProperties:3: error: key 'timeStep': cannot be checked.*maxExpectedVelocity"
   "soft_material|s/youngsModulus 5e6/youngsModulus 1e4/;s/^endTime        0.02;/endTime        0.3;/|error: a contact overlap reached .*The time step is not the cause.*raise youngsModulus"
+  "cylinder_region_outside|s/region   { type box; min (-0.01 -0.01 0); max (0.01 0.01 0.04); }/region { type cylinder; axis z; centre (0 0); radius 0.05; axialMin 0; axialMax 0.04; }/|demProperties:17: error: key 'radius': the cylinder must lie inside the domain"
+  "nul_byte|s/^skin           0.3e-3;/skin 0.3e-3; \x00/|demProperties:7: error: .*NUL byte"
   "sjkr_without_energy|s/tangential history; }/tangential history; cohesion sjkr; }/|demProperties:11: error: .*cohesionEnergyDensity"
   "roughness_angle|s/tangential history; }/tangential history; surface roughness; roughness { distribution uniform; max 2; } }/|demProperties:10: error: key 'max'"
   "blow_up|s/^timeStep       1e-5;/timeStep       5e-4; timeStepOverride true; endTime 1;/;/^endTime /d|blew up|left the domain|moved more than half its radius"
