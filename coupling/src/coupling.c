@@ -30,6 +30,7 @@
 #include "case.h"
 #include "coupling.h"
 #include "dict.h"
+#include "number.h"
 #include "error.h"
 #include "exchange.h"
 #include "interpolate.h"
@@ -276,7 +277,7 @@ static void open_means(coupling *c, const char *path)
         while (fgets(line, sizeof line, old)) {
             if (line[0] == '#') continue;
             char *end;
-            const double t = strtod(line, &end);
+            const double t = dem_strtod(line, &end);
             if (end == line || !(t <= c->s.time + 0.5 * c->s.dt)) continue;
             const size_t len = strlen(line);
             if (nkept + len + 1 > cap) {
@@ -335,6 +336,8 @@ static void setup_particles(coupling *c, const char *case_dir, double t_start)
     c->writer = dem_io_open_writer(base, c->restarted);
 }
 
+int coupling_case_gravity(const char *case_dir, double g[3]) { return dem_case_gravity(case_dir, g); }
+
 coupling *coupling_create(const char *case_dir, cpl_mesh *mesh, double rho_f, double nu_f, double dt_f,
                           double t_start)
 {
@@ -349,6 +352,11 @@ coupling *coupling_create(const char *case_dir, cpl_mesh *mesh, double rho_f, do
     double alpha_min, kernel_width, kernel_cutoff;
     enum cpl_vf_model vf_model;
     read_coupling_properties(c, dt_f, &alpha_min, &vf_model, &kernel_width, &kernel_cutoff);
+    /* checked before the product (under OpenFOAM's traps an overflow is a signal) */
+    if (!(rho_f > 0.0 && rho_f <= 1e5))
+        dem_fatal("constant/transportProperties: rho = %g kg/m^3 is out of range: allowed (0, 1e5]", rho_f);
+    if (!(nu_f > 0.0 && nu_f <= 1e2))
+        dem_fatal("constant/transportProperties: nu = %g m^2/s is out of range: allowed (0, 1e2]", nu_f);
     c->params.rho_f = rho_f;
     c->params.mu_f = rho_f * nu_f;
     for (int q = 0; q < 3; q++) c->params.gravity[q] = c->s.gravity[q];

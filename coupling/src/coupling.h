@@ -43,6 +43,11 @@ enum cpl_model_type { CPL_MODEL_A, CPL_MODEL_B };
  * the fluid's start time [s]; 0 inserts the particles of demProperties, a later time continues
  * from the snapshot of <case>/particles.h5 at that time (contacts and forces included; later
  * snapshots are dropped). Errors in the dictionaries are fatal, with file, line and key. */
+/* The DEM's gravity [m/s^2] from <case_dir>/constant/demProperties, read and checked by our
+ * reader (errors through the fatal hook): 1 if given, else 0 with g = 0. For the solver, which
+ * needs it before the session and must not parse the file with another reader. */
+int coupling_case_gravity(const char *case_dir, double g[3]);
+
 coupling *coupling_create(const char *case_dir, cpl_mesh *mesh, double rho_f, double nu_f, double dt_f,
                           double t_start);
 /* 1 when the session continued from a snapshot (t_start > 0). */

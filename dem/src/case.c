@@ -10,6 +10,27 @@
 
 static const char *const axis_names[] = {"x", "y", "z", 0};
 
+/* gravity [m/s^2], (0 0 0) by default; up to 1e5 g: beyond, free-fall speeds and forces overflow */
+static void read_gravity(const dem_dict *root, double g[3])
+{
+    const double zero[3] = {0, 0, 0};
+    dem_dict_vector_opt(root, "gravity", g, zero);
+    for (int k = 0; k < 3; k++)
+        if (!(fabs(g[k]) <= 1e6))
+            dem_dict_fatal(root, "gravity", "component %c = %g m/s^2 is out of range: allowed [-1e6, 1e6]", "xyz"[k], g[k]);
+}
+
+int dem_case_gravity(const char *case_dir, double g[3])
+{
+    char path[4096];
+    snprintf(path, sizeof path, "%s/constant/demProperties", case_dir);
+    dem_dict *root = dem_dict_read(path);
+    const int found = dem_dict_has(root, "gravity");
+    read_gravity(root, g);
+    dem_dict_free(root);
+    return found;
+}
+
 static void read_domain(const dem_dict *root, dem_system *s)
 {
     const dem_dict *d = dem_dict_sub(root, "domain");
@@ -204,6 +225,17 @@ static dem_wall *new_wall(dem_system *s, const dem_dict *d, const char *name)
     return w;
 }
 
+/* A direction, any length: scaled by its largest component first, so that neither 1e200 nor
+ * 1e-200 overflows or underflows on the way to a unit vector. n: read by the caller. */
+static void read_unit_normal(const dem_dict *e, double n[3])
+{
+    const double big = fmax(fabs(n[0]), fmax(fabs(n[1]), fabs(n[2])));
+    if (!(big > 0.0)) dem_dict_fatal(e, "normal", "the normal must not be zero");
+    for (int k = 0; k < 3; k++) n[k] /= big;
+    const double len = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    for (int k = 0; k < 3; k++) n[k] /= len;
+}
+
 /* A symmetry plane (symmetry.h): no material and no force, so not a wall. It must lie within
  * the domain (its point inside the domain box) and may not cut a periodic direction. */
 static void read_symmetry_plane(const dem_dict *e, const char *name, dem_system *s)
@@ -216,9 +248,7 @@ static void read_symmetry_plane(const dem_dict *e, const char *name, dem_system 
     snprintf(sp->name, sizeof sp->name, "%s", name);
     dem_dict_vector(e, "point", sp->point);
     dem_dict_vector(e, "normal", sp->normal);
-    const double len = sqrt(sp->normal[0] * sp->normal[0] + sp->normal[1] * sp->normal[1] + sp->normal[2] * sp->normal[2]);
-    if (!(len > 0.0)) dem_dict_fatal(e, "normal", "the normal must not be zero");
-    for (int k = 0; k < 3; k++) sp->normal[k] /= len;
+    read_unit_normal(e, sp->normal);
     for (int k = 0; k < 3; k++) {
         const double slack = 1e-9 * (s->domain_max[k] - s->domain_min[k]);
         if (!(sp->point[k] >= s->domain_min[k] - slack && sp->point[k] <= s->domain_max[k] + slack))
@@ -265,9 +295,7 @@ static void read_walls(const dem_dict *root, dem_system *s)
             w->material = mat;
             dem_dict_vector(e, "point", w->point);
             dem_dict_vector(e, "normal", w->normal);
-            const double len = sqrt(w->normal[0] * w->normal[0] + w->normal[1] * w->normal[1] + w->normal[2] * w->normal[2]);
-            if (!(len > 0.0)) dem_dict_fatal(e, "normal", "the normal must not be zero");
-            for (int k = 0; k < 3; k++) w->normal[k] /= len;
+            read_unit_normal(e, w->normal);
             if (dem_dict_has(e, "boundsMin") || dem_dict_has(e, "boundsMax")) {
                 w->bounded = 1;
                 dem_dict_vector(e, "boundsMin", w->bounds_min);
@@ -480,8 +508,7 @@ void dem_case_read(const char *case_dir, dem_system *s, dem_run_settings *rs, in
                        "shorten endTime or lengthen timeStep", rs->end_time / s->dt, rs->end_time, s->dt);
     rs->write_interval = dem_dict_scalar_opt(root, "writeInterval", 0.0, 0.0, 1e9);
     rs->progress_interval = dem_dict_scalar_opt(root, "progressInterval", 5.0, 0.0, 1e6);
-    const double zero[3] = {0, 0, 0};
-    dem_dict_vector_opt(root, "gravity", s->gravity, zero);
+    read_gravity(root, s->gravity);
     s->nlist.skin = dem_dict_scalar_opt(root, "skin", 0.0, 0.0, 10.0);
     s->nlist.sort_interval = (int)dem_dict_label_opt(root, "sortInterval", 20, 0, 1000000);
     s->max_overlap_fraction = dem_dict_scalar_opt(root, "maxOverlapFraction", 0.2, 1e-6, 1.0);

@@ -19,6 +19,11 @@ typedef struct dem_run_settings {
  * time-step check is left to the caller (after a restart has loaded its particles). */
 void dem_case_read(const char *case_dir, dem_system *s, dem_run_settings *rs, int skip_insertion);
 
+/* gravity [m/s^2] of <case_dir>/constant/demProperties, read and checked as dem_case_read does
+ * (the coupled solver needs it before the session; it must not parse our file itself): 1 if the
+ * key is there, else 0 with g = 0. */
+int dem_case_gravity(const char *case_dir, double g[3]);
+
 /* The fastest particle now plus a free fall over the domain's extent along gravity [m/s]. */
 double dem_case_default_max_velocity(const dem_system *s);
 

@@ -17,6 +17,7 @@
 
 #include "dict.h"
 #include "error.h"
+#include "number.h"
 
 /* Guards against runaway recursion (self-including files, absurd nesting). */
 enum { MAX_INCLUDE_DEPTH = 16, MAX_DICT_DEPTH = 64 };
@@ -717,7 +718,7 @@ static double tok_number(const entry *e, const token *t, const char *what)
     char buf[128];
     if (t->type != T_NUMBER)
         fatal_at(e->file, t->line, e->key, "expected %s, got '%s'", what, show_token(t, buf, sizeof buf));
-    double v = strtod(t->text, NULL);
+    double v = dem_strtod(t->text, NULL);
     if (!isfinite(v)) fatal_at(e->file, t->line, e->key, "number '%s' is too large", t->text);
     return v;
 }
@@ -825,7 +826,7 @@ static long list_open(cursor *c, const char *what)
     long count = -1;
     char buf[128];
     if (t && t->type == T_NUMBER && is_p(c->pos + 1 < e->ntok ? &e->tok[c->pos + 1] : NULL, '(')) {
-        double v = strtod(t->text, NULL);
+        double v = dem_strtod(t->text, NULL);
         if (!(v >= 0 && v <= 1e9 && v == floor(v)))
             fatal_at(e->file, t->line, e->key, "bad list length '%s' before '('", t->text);
         count = (long)v;

@@ -24,6 +24,7 @@
 #include "dict.h"
 #include "error.h"
 #include "insert.h"
+#include "number.h"
 #include "system.h"
 
 typedef struct reader {
@@ -88,7 +89,7 @@ static double number_or_fatal(const reader *rd, int line, const char *text, size
     char tok[128];
     snprintf(tok, sizeof tok, "%.*s", (int)(n < sizeof tok ? n : sizeof tok - 1), text);
     char *end;
-    const double v = strtod(tok, &end);
+    const double v = dem_strtod(tok, &end);
     if (end == tok || *end != '\0' || n >= sizeof tok) file_fatal(rd, line, "%s: '%s' is not a number", what, tok);
     if (!isfinite(v)) file_fatal(rd, line, "%s: '%s' is not a finite number", what, tok);
     return v;

@@ -59,6 +59,21 @@ namespace
 }
 
 
+// * * * * * * * * * * * * * * Static Member Functions  * * * * * * * * * * * * //
+
+bool Foam::demCoupling::demGravity(const fileName& caseDir, vector& g)
+{
+    const dem_fatal_handler fatal = dem_set_fatal_handler(raiseFatalError);
+    const dem_logger logger = dem_set_logger(writeLog);
+    double cg[3];
+    const bool found = coupling_case_gravity(caseDir.c_str(), cg);
+    dem_set_fatal_handler(fatal);
+    dem_set_logger(logger);
+    g = vector(cg[0], cg[1], cg[2]);
+    return found;
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::demCoupling::demCoupling
