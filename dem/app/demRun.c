@@ -56,7 +56,10 @@ static void run_steps(dem_system *s, long nsteps, long write_every, dem_particle
     double next_report = start + progress_interval;
     for (long k = 1; k <= nsteps; k++) {
         dem_system_step(s);
-        if (write_every > 0 && s->step % write_every == 0) write_snapshot(w, s);
+        if (write_every > 0 && s->step % write_every == 0) {
+            write_snapshot(w, s);
+            dem_system_relist(s);   /* as a restart from this snapshot will: the two runs stay equal */
+        }
         if (progress_interval > 0 && (k & 63) == 0) {
             const double now = wall_clock();
             if (now >= next_report) {

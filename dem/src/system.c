@@ -110,6 +110,16 @@ long dem_system_setup_with_contacts(dem_system *s, const dem_contact_store *save
     return found;
 }
 
+void dem_system_relist(dem_system *s)
+{
+    dem_contacts_gather(s, &s->carried);
+    s->nlist.builds = 0;   /* as in a fresh system: the first build sorts */
+    dem_walls_move(s, s->time);
+    dem_neighbour_rebuild(s);
+    dem_walls_build_candidates(s);
+    dem_contacts_scatter(s, &s->carried);
+}
+
 void dem_system_setup(dem_system *s)
 {
     dem_system_setup_with_contacts(s, NULL, 1);

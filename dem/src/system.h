@@ -49,6 +49,11 @@ void dem_system_free(dem_system *s);
 /* After particles, materials, models, walls are set: allocate histories, build the list,
  * compute the first forces. */
 void dem_system_setup(dem_system *s);
+/* Make the neighbour and wall lists again as a restart's set-up makes them (the sorting
+ * schedule starts again, the histories carried over by contact): called where a snapshot is
+ * written, so that a run restarted from that snapshot continues bit for bit (the order in which
+ * each particle's contact forces are summed follows the lists). */
+void dem_system_relist(dem_system *s);
 /* The same, with the contact history of a store (contacts.h) put back onto the new lists, and
  * the first forces only if compute_forces (a restart keeps its snapshot's); returns how many
  * contacts were found. */
