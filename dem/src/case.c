@@ -412,6 +412,7 @@ static void run_insertions(const dem_dict *root, dem_system *s, int insert, cons
         dem_insertion ins;
         memset(&ins, 0, sizeof ins);
         snprintf(ins.name, sizeof ins.name, "%s", name);
+        snprintf(ins.source, sizeof ins.source, "%s:%d", dem_dict_path(e), dem_dict_line(e));
         ins.method = dem_dict_choice_opt(e, "method", methods, INSERT_RANDOM);
         const double zero[3] = {0, 0, 0};
         dem_dict_vector_opt(e, "velocity", ins.velocity, zero);

@@ -207,7 +207,7 @@ long dem_insertion_run(dem_system *s, const dem_insertion *ins)
         ? fmin(fmin(ins->max[0] - ins->min[0], ins->max[1] - ins->min[1]), ins->max[2] - ins->min[2])
         : fmin(2.0 * ins->radius, ins->max[ins->axis] - ins->min[ins->axis]);
     if (region_extent_ok < dmax_ins)
-        dem_fatal("insertion '%s': the region (smallest extent %g m) is smaller than the largest "
+        dem_fatal_at(ins->source[0] ? ins->source : NULL, "insertion '%s': the region (smallest extent %g m) is smaller than the largest "
                   "diameter %g m", ins->name, region_extent_ok, dmax_ins);
 
     while (target > 0 ? placed < target : volume < target_volume) {
@@ -219,7 +219,7 @@ long dem_insertion_run(dem_system *s, const dem_insertion *ins)
             ok = !overlaps(s, &g, x, radius);
         }
         if (!ok)
-            dem_fatal("insertion '%s': placed only %ld particles (solid fraction %.3f of the "
+            dem_fatal_at(ins->source[0] ? ins->source : NULL, "insertion '%s': placed only %ld particles (solid fraction %.3f of the "
                       "region) before a particle found no free place in %d attempts. Enlarge the "
                       "region, lower number/solidFraction (random placement jams near 0.3), or "
                       "raise maxAttempts.",

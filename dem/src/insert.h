@@ -22,6 +22,7 @@ enum dem_region_kind { REGION_BOX, REGION_CYLINDER };
 
 typedef struct dem_insertion {
     char name[64];
+    char source[4200];              /* "file:line" of the entry, for errors found while inserting */
     enum dem_insertion_method method;
     enum dem_region_kind region;
     double min[3], max[3];          /* box; for a cylinder the axial range is min/max[axis] */

@@ -34,6 +34,7 @@ cases=(
   "soft_material|s/youngsModulus 5e6/youngsModulus 1e4/;s/^endTime        0.02;/endTime        0.3;/|error: a contact overlap reached .*The time step is not the cause.*raise youngsModulus"
   "cylinder_region_outside|s/region   { type box; min (-0.01 -0.01 0); max (0.01 0.01 0.04); }/region { type cylinder; axis z; centre (0 0); radius 0.05; axialMin 0; axialMax 0.04; }/|demProperties:17: error: key 'radius': the cylinder must lie inside the domain"
   "nul_byte|s/^skin           0.3e-3;/skin 0.3e-3; \x00/|demProperties:7: error: .*NUL byte"
+  "insertion_too_many|s/number   200;/number 200000;/|demProperties:16: error: insertion 'fill': placed only"
   "sjkr_without_energy|s/tangential history; }/tangential history; cohesion sjkr; }/|demProperties:11: error: .*cohesionEnergyDensity"
   "roughness_angle|s/tangential history; }/tangential history; surface roughness; roughness { distribution uniform; max 2; } }/|demProperties:10: error: key 'max'"
   "blow_up|s/^timeStep       1e-5;/timeStep       5e-4; timeStepOverride true; endTime 1;/;/^endTime /d|blew up|left the domain|moved more than half its radius"
