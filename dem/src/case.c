@@ -41,10 +41,12 @@ static void read_domain(const dem_dict *root, dem_system *s)
         if (!(s->domain_max[k] > s->domain_min[k]))
             dem_dict_fatal(d, "max", "max must exceed min in every direction (%c: min %g, max %g)",
                        "xyz"[k], s->domain_min[k], s->domain_max[k]);
-        /* the cells and the insertion grid divide the length: it must be a number (1e308 - -1e308 is not) */
-        if (!(isfinite(s->domain_min[k]) && isfinite(s->domain_max[k]) && isfinite(s->domain_max[k] - s->domain_min[k])))
-            dem_dict_fatal(d, "max", "the domain's length in %c (max %g - min %g) is not a finite number",
-                       "xyz"[k], s->domain_max[k], s->domain_min[k]);
+        /* coordinates within 1000 km: beyond, free-fall speeds, cell counts and squared distances
+         * overflow (a signal under OpenFOAM's floating-point traps) */
+        if (!(fabs(s->domain_min[k]) <= 1e6))
+            dem_dict_fatal(d, "min", "%c = %g m is out of range: domain coordinates lie within [-1e6, 1e6] m", "xyz"[k], s->domain_min[k]);
+        if (!(fabs(s->domain_max[k]) <= 1e6))
+            dem_dict_fatal(d, "max", "%c = %g m is out of range: domain coordinates lie within [-1e6, 1e6] m", "xyz"[k], s->domain_max[k]);
     }
     for (int k = 0; k < 3; k++) {   /* as system_setup_begin: the insertions' overlap checks need it */
         s->period[k] = s->periodic[k] ? s->domain_max[k] - s->domain_min[k] : 0.0;
@@ -215,6 +217,9 @@ static void read_cylinder(const dem_dict *d, int *axis, double centre[2], double
     centre[0] = c[0];
     centre[1] = c[1];
     free(c);
+    for (int k = 0; k < 2; k++)   /* as the domain's coordinates: squared distances must not overflow */
+        if (!(fabs(centre[k]) <= 1e6))
+            dem_dict_fatal(d, "centre", "%g m is out of range: coordinates lie within [-1e6, 1e6] m", centre[k]);
     *radius = dem_dict_scalar(d, "radius", 1e-9, 1e6);
 }
 
@@ -294,6 +299,9 @@ static void read_walls(const dem_dict *root, dem_system *s)
             w->kind = WALL_PLANE;
             w->material = mat;
             dem_dict_vector(e, "point", w->point);
+            for (int k = 0; k < 3; k++)
+                if (!(fabs(w->point[k]) <= 1e6))
+                    dem_dict_fatal(e, "point", "%c = %g m is out of range: coordinates lie within [-1e6, 1e6] m", "xyz"[k], w->point[k]);
             dem_dict_vector(e, "normal", w->normal);
             read_unit_normal(e, w->normal);
             if (dem_dict_has(e, "boundsMin") || dem_dict_has(e, "boundsMax")) {
