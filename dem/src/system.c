@@ -52,13 +52,19 @@ static void check_step_motion(const dem_system *s)
     }
 }
 
-static void rebuild(dem_system *s)
+/* The neighbour and wall lists made again, each contact's history carried over by its ids. */
+static void remake_lists(dem_system *s)
 {
-    check_step_motion(s);
     dem_contacts_gather(s, &s->carried);
     dem_neighbour_rebuild(s);
     dem_walls_build_candidates(s);
     dem_contacts_scatter(s, &s->carried);
+}
+
+static void rebuild(dem_system *s)
+{
+    check_step_motion(s);
+    remake_lists(s);
 }
 
 /* Each chosen model's derived constants per material pair, and the reach of the normal model
@@ -112,12 +118,9 @@ long dem_system_setup_with_contacts(dem_system *s, const dem_contact_store *save
 
 void dem_system_relist(dem_system *s)
 {
-    dem_contacts_gather(s, &s->carried);
     s->nlist.builds = 0;   /* as in a fresh system: the first build sorts */
     dem_walls_move(s, s->time);
-    dem_neighbour_rebuild(s);
-    dem_walls_build_candidates(s);
-    dem_contacts_scatter(s, &s->carried);
+    remake_lists(s);
 }
 
 void dem_system_setup(dem_system *s)
