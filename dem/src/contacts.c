@@ -125,6 +125,140 @@ long dem_contacts_scatter(dem_system *s, const dem_contact_store *cs)
     return found;
 }
 
+void dem_contact_rows_init(dem_contact_rows *cr, int history_size, int antisymmetric)
+{
+    memset(cr, 0, sizeof *cr);
+    dem_contact_store_init(&cr->spill, history_size, antisymmetric);
+}
+
+void dem_contact_rows_free(dem_contact_rows *cr)
+{
+    free(cr->row_id);
+    free(cr->start);
+    free(cr->partner_id);
+    free(cr->history);
+    free(cr->wall_start);
+    free(cr->matched);
+    dem_contact_store_free(&cr->spill);
+    memset(cr, 0, sizeof *cr);
+}
+
+static void rows_push(dem_contact_rows *cr, int64_t partner, const double *h, int hs)
+{
+    if (cr->count == cr->capacity) {
+        cr->capacity = cr->capacity ? 2 * cr->capacity : 4096;
+        cr->partner_id = dem_realloc(cr->partner_id, (size_t)cr->capacity * sizeof(int64_t));
+        cr->history = dem_realloc(cr->history, (size_t)cr->capacity * hs * sizeof(double));
+        cr->matched = dem_realloc(cr->matched, (size_t)cr->capacity);
+    }
+    cr->partner_id[cr->count] = partner;
+    memcpy(cr->history + (size_t)cr->count * hs, h, (size_t)hs * sizeof(double));
+    cr->matched[cr->count] = 0;
+    cr->count++;
+}
+
+void dem_contacts_gather_rows(const dem_system *s, dem_contact_rows *cr)
+{
+    const int hs = s->history_size;
+    const dem_neighbour_list *nl = &s->nlist;
+    const int64_t *id = s->p.id;
+    cr->count = 0;
+    cr->rows = hs ? nl->rows : 0;
+    if (cr->rows + 1 > cr->rows_capacity) {
+        cr->rows_capacity = cr->rows + 1;
+        cr->row_id = dem_realloc(cr->row_id, (size_t)cr->rows_capacity * sizeof(int64_t));
+        cr->start = dem_realloc(cr->start, (size_t)cr->rows_capacity * sizeof(int));
+    }
+    if (s->nwalls + 1 > cr->walls_capacity) {
+        cr->walls_capacity = s->nwalls + 1;
+        cr->wall_start = dem_realloc(cr->wall_start, (size_t)cr->walls_capacity * sizeof(int));
+    }
+    for (int i = 0; i < cr->rows; i++) {
+        cr->row_id[i] = id[i];
+        cr->start[i] = (int)cr->count;
+        for (int k = nl->start[i]; k < nl->start[i + 1]; k++)
+            if (nl->touching[k]) rows_push(cr, id[nl->partner[k]], nl->history + (size_t)k * hs, hs);
+    }
+    cr->start[cr->rows] = (int)cr->count;
+    for (int w = 0; w < s->nwalls; w++) {
+        cr->wall_start[w] = (int)cr->count;
+        const dem_wall_contacts *wc = &s->wall_lists[w];
+        for (int m = 0; hs && m < wc->n; m++)
+            if (wc->touching[m]) rows_push(cr, wc->particle[m], wc->history + (size_t)m * hs, hs);
+    }
+    cr->wall_start[s->nwalls] = (int)cr->count;
+}
+
+long dem_contacts_scatter_rows(dem_system *s, dem_contact_rows *cr)
+{
+    const int hs = s->history_size;
+    if (hs == 0 || cr->count == 0) return 0;
+    dem_neighbour_list *nl = &s->nlist;
+    const int64_t *id = s->p.id;
+    const int same_rows = nl->rows < cr->rows ? nl->rows : cr->rows;
+    long found = 0;
+    /* pairs whose owner kept its index and the pair its owner */
+    for (int i = 0; i < same_rows; i++) {
+        if (cr->row_id[i] != id[i] || cr->start[i] == cr->start[i + 1]) continue;
+        for (int k = nl->start[i]; k < nl->start[i + 1]; k++) {
+            const int64_t pid = id[nl->partner[k]];
+            for (int c = cr->start[i]; c < cr->start[i + 1]; c++)
+                if (cr->partner_id[c] == pid && !cr->matched[c]) {
+                    memcpy(nl->history + (size_t)k * hs, cr->history + (size_t)c * hs, (size_t)hs * sizeof(double));
+                    nl->touching[k] = 1;   /* the force loop clears it if the contact is over */
+                    cr->matched[c] = 1;
+                    found++;
+                    break;
+                }
+        }
+    }
+    /* wall contacts of particles that kept their index: both lists ascend by particle index */
+    for (int w = 0; w < s->nwalls; w++) {
+        dem_wall_contacts *wc = &s->wall_lists[w];
+        int m = 0;
+        for (int c = cr->wall_start[w]; c < cr->wall_start[w + 1]; c++) {
+            const int i = (int)cr->partner_id[c];
+            if (i >= same_rows || cr->row_id[i] != id[i]) continue;
+            while (m < wc->n && wc->particle[m] < i) m++;
+            if (m < wc->n && wc->particle[m] == i) {
+                memcpy(wc->history + (size_t)m * hs, cr->history + (size_t)c * hs, (size_t)hs * sizeof(double));
+                wc->touching[m] = 1;
+                cr->matched[c] = 1;
+                found++;
+            }
+        }
+    }
+    /* the rest by ids */
+    dem_contact_store *spill = &cr->spill;
+    dem_contact_store_clear(spill);
+    for (int i = 0; i < cr->rows; i++)
+        for (int c = cr->start[i]; c < cr->start[i + 1]; c++)
+            if (!cr->matched[c]) dem_contact_store_put(spill, cr->row_id[i], cr->partner_id[c], cr->history + (size_t)c * hs);
+    for (int w = 0; w < s->nwalls; w++)
+        for (int c = cr->wall_start[w]; c < cr->wall_start[w + 1]; c++)
+            if (!cr->matched[c])
+                dem_contact_store_put(spill, contact_wall_key(w), cr->row_id[cr->partner_id[c]],
+                                      cr->history + (size_t)c * hs);
+    if (spill->count == 0) return found;
+    for (int i = 0; i < nl->rows; i++)
+        for (int k = nl->start[i]; k < nl->start[i + 1]; k++)
+            if (!nl->touching[k] &&
+                dem_contact_store_take(spill, id[i], id[nl->partner[k]], nl->history + (size_t)k * hs)) {
+                nl->touching[k] = 1;
+                found++;
+            }
+    for (int w = 0; w < s->nwalls; w++) {
+        dem_wall_contacts *wc = &s->wall_lists[w];
+        for (int m = 0; m < wc->n; m++)
+            if (!wc->touching[m] &&
+                dem_contact_store_take(spill, contact_wall_key(w), id[wc->particle[m]], wc->history + (size_t)m * hs)) {
+                wc->touching[m] = 1;
+                found++;
+            }
+    }
+    return found;
+}
+
 void dem_contacts_to_state(const dem_contact_store *store, int nwalls, dem_contact_state *state)
 {
     const int hs = store->history_size;

@@ -44,6 +44,33 @@ void dem_contacts_gather(const struct dem_system *s, dem_contact_store *cs);
  * returns how many were found. */
 long dem_contacts_scatter(struct dem_system *s, const dem_contact_store *cs);
 
+/* Carrying the histories across a rebuild. Most rebuilds keep every particle at its index (only
+ * every sortInterval-th sorts), and a contact stays in its owner's row: then each row's new pairs
+ * find their histories among the few the row held before, in order through memory, where a hash
+ * look-up per listed pair would jump. Whatever does not match so (rows whose particle changed
+ * index, pairs that changed owner as a particle wrapped through a periodic side) goes through the
+ * store by ids, so the result is the same as a carry by ids alone. */
+typedef struct dem_contact_rows {
+    int rows;                /* particles listed at the gather */
+    int64_t *row_id;         /* the id each row belonged to */
+    int *start;              /* row i's contacts: [start[i], start[i+1]) */
+    int64_t *partner_id;     /* a pair's partner by id; a wall contact: its particle's index */
+    double *history;
+    int *wall_start;         /* wall w's contacts after the pairs: [wall_start[w], wall_start[w+1]) */
+    unsigned char *matched;
+    long count, capacity;
+    int rows_capacity, walls_capacity;
+    dem_contact_store spill; /* the unmatched, by ids */
+} dem_contact_rows;
+
+void dem_contact_rows_init(dem_contact_rows *cr, int history_size, int antisymmetric);
+void dem_contact_rows_free(dem_contact_rows *cr);
+/* Before a rebuild: the touching contacts, by row. */
+void dem_contacts_gather_rows(const struct dem_system *s, dem_contact_rows *cr);
+/* After it: onto the new lists (each listed pair and wall candidate whose contact was held);
+ * returns how many were found. */
+long dem_contacts_scatter_rows(struct dem_system *s, dem_contact_rows *cr);
+
 /* The flat form a snapshot holds (io.h), from and into a store. */
 void dem_contacts_to_state(const dem_contact_store *store, int nwalls, dem_contact_state *state);
 void dem_contacts_from_state(const dem_contact_state *state, dem_contact_store *store);

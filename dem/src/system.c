@@ -22,7 +22,7 @@ void dem_system_free(dem_system *s)
     dem_neighbour_free(&s->nlist);
     dem_walls_free(s);
     dem_ghosts_free(&s->ghosts);
-    dem_contact_store_free(&s->carried);
+    dem_contact_rows_free(&s->carried);
     memset(s, 0, sizeof *s);
 }
 
@@ -55,10 +55,10 @@ static void check_step_motion(const dem_system *s)
 /* The neighbour and wall lists made again, each contact's history carried over by its ids. */
 static void remake_lists(dem_system *s)
 {
-    dem_contacts_gather(s, &s->carried);
+    dem_contacts_gather_rows(s, &s->carried);
     dem_neighbour_rebuild(s);
     dem_walls_build_candidates(s);
-    dem_contacts_scatter(s, &s->carried);
+    dem_contacts_scatter_rows(s, &s->carried);
 }
 
 static void rebuild(dem_system *s)
@@ -96,8 +96,8 @@ long dem_system_setup_with_contacts(dem_system *s, const dem_contact_store *save
     s->history_size = dem_contact_history_size(&s->models);
     s->nlist.history_size = s->history_size;
     s->nlist.history_antisymmetric = dem_contact_history_antisymmetric(&s->models);
-    dem_contact_store_free(&s->carried);
-    dem_contact_store_init(&s->carried, s->history_size, s->nlist.history_antisymmetric);
+    dem_contact_rows_free(&s->carried);
+    dem_contact_rows_init(&s->carried, s->history_size, s->nlist.history_antisymmetric);
     for (int d = 0; d < 3; d++) {
         s->period[d] = s->periodic[d] ? s->domain_max[d] - s->domain_min[d] : 0.0;
         s->inv_period[d] = s->periodic[d] ? 1.0 / s->period[d] : 0.0;

@@ -32,7 +32,7 @@ typedef struct dem_system {
 
     dem_neighbour_list nlist;
     dem_ghost_list ghosts;                /* periodic images, stored after the particles (ghosts.h) */
-    dem_contact_store carried;            /* the contacts' history across a rebuild (contacts.h) */
+    dem_contact_rows carried;             /* the contacts' history across a rebuild (contacts.h) */
 
     double gravity[3];                /* [m/s^2] */
     double dt;                        /* [s] */
