@@ -322,9 +322,9 @@ static void setup_particles(coupling *c, const char *case_dir, double t_start)
             dem_fatal("%s.h5: no complete particle snapshot at t = %g s, where the fluid starts (a coupled "
                       "run starts at t = 0, or continues from a write time: its fields and its particle "
                       "snapshot)", base, t_start);
-        c->s.time = t_start;   /* the fluid's time name, exactly */
+        /* the DEM keeps its own clock (the snapshot's, within half a step of t_start) */
         c->exchanged = saved.coupling_read;   /* what the fluid of t_start received */
-        const int dropped = dem_io_drop_snapshots_after(base, t_start);
+        const int dropped = dem_io_drop_snapshots_after(base, c->s.time);
         dem_info("coupling: continuing from %s.h5 at t = %g s (DEM step %ld), %d particles%s", base, c->s.time,
                  c->s.step, c->s.p.n, dropped ? "; later snapshots dropped" : "");
     }
@@ -447,15 +447,23 @@ void coupling_particle_forces(const coupling *c, double fluid[3], double walls[3
 
 void coupling_write(coupling *c, double time)
 {
-    /* at an exchange the DEM's time is the fluid's; the snapshot takes the fluid's exactly, so
-     * that a run continued from this write time finds it; with the contact history, so that it
-     * continues the contacts */
+    /* at an exchange the DEM's time is the fluid's but for round-off (each accumulates its own
+     * steps); the snapshot keeps the DEM's clock exactly, so that a run continued from it steps
+     * the same times, and a continued run finds it by the fluid's time within half a DEM step */
     if (fabs(time - c->s.time) > 0.5 * c->s.dt)
         dem_fatal("coupling: particle snapshot asked at t = %g s, but the DEM is at t = %g s", time, c->s.time);
     dem_contact_state cs;
     dem_restart_save_contacts(&c->s, &cs);
-    dem_io_write_snapshot_contacts(c->writer, &c->s.p, time, c->s.step, &cs);
+    dem_io_write_snapshot_contacts(c->writer, &c->s.p, c->s.time, c->s.step, &cs);
     dem_contact_state_free(&cs);
+    /* Continue from here as a run continued from this snapshot does (bit for bit): lists made
+     * anew (sorted, histories carried by ids), so that contact forces sum in its order, and the
+     * void fraction's per-particle weights and cellPoint's tetrahedra made again in that order.
+     * The fluid keeps the void fraction it solved with (written with the fields; a continued
+     * run reads it back). */
+    dem_system_relist(&c->s);
+    update_void_fraction(c);
+    c->tets_valid = 0;
 }
 
 int coupling_restarted(const coupling *c) { return c->restarted; }

@@ -138,8 +138,10 @@ int main(int argc, char *argv[])
     // c of the pressure term at the faces: alpha_f (model A) or 1 (model B)
     surfaceScalarField pCoeff_f("pCoeff_f", alphaf);
 
-    // The initial void fraction, if the C side has one before the first step
-    const bool haveInitialAlpha = coupling.initialAlpha(alpha);
+    // The initial void fraction: a continued run's as written at its start time, else the C
+    // side's, if it has one before the first step
+    const bool haveInitialAlpha =
+        (coupling.restarted() && alpha.headerOk()) || coupling.initialAlpha(alpha);
     if (!haveInitialAlpha)
     {
         Info<< "The coupling layer gives no initial void fraction: alpha starts at 1 and"
