@@ -103,6 +103,7 @@ Description
 
 #include "demCoupling.H"
 #include "fluxReconstruction.H"
+#include "heldTraps.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
