@@ -156,6 +156,7 @@ void dem_neighbour_rebuild(dem_system *s)
     nl->npairs = 0;
     const int nx = nl->ncell[0], ny = nl->ncell[1], nz = nl->ncell[2];
     const int64_t *id = p->id;
+    const int *body = p->body;
     for (int i = 0; i < p->n; i++) {
         nl->start[i] = (int)nl->npairs;
         const int c = nl->cell_of[i];
@@ -173,6 +174,7 @@ void dem_neighbour_rebuild(dem_system *s)
                          * (j's owner with the image of i) exists too, and only the one whose real
                          * particle has the lower id is kept */
                         if (j < p->n ? j <= i : id[j] <= id[i]) continue;
+                        if (body[i] && body[i] == body[j]) continue;   /* one rigid body: no contact */
                         double d2 = 0.0;
                         for (int d = 0; d < 3; d++) {
                             const double dx = p->x[i][d] - p->x[j][d];

@@ -61,6 +61,10 @@ enum { PF_WRITE = 1, PF_RESTART = 2, PF_MIGRATE = 4 };
     X(id,          int64,  "1",        "id",              PF_WRITE | PF_RESTART | PF_MIGRATE)    \
     /* 1: moves at its velocity whatever the forces (insertion's prescribedVelocity) */          \
     X(prescribed,  int,    "1",        "prescribed",      PF_WRITE | PF_RESTART | PF_MIGRATE)    \
+    /* multisphere: 1 + the index of the body this sphere belongs to (bodies.h), 0 for a free    \
+     * sphere; its centre in the body's principal frame, relative to the centre of mass */      \
+    X(body,        int,    "1",        "body",            PF_WRITE | PF_RESTART | PF_MIGRATE)    \
+    X(body_offset, dem_vec3,   "m",        "body_offset",     PF_RESTART | PF_MIGRATE)               \
     /* coupling: the fluid cell of the centre at the last exchange (-1: outside the mesh) */   \
     X(fluid_cell,  int,    "1",        "fluid_cell",      0)                                     \
     /* coupling: the fluid force is beta (u_fluid - v) + f_fluid + f_pgrad; beta (0 when      \

@@ -27,6 +27,15 @@ void dem_quat_matrix(const double q[4], double R[3][3])
     R[2][0] = 2 * (x * z - w * y);     R[2][1] = 2 * (y * z + w * x);     R[2][2] = 1 - 2 * (x * x + y * y);
 }
 
+void dem_quat_multiply(const double a[4], const double b[4], double out[4])
+{
+    const double w = a[0] * b[0] - a[1] * b[1] - a[2] * b[2] - a[3] * b[3];
+    const double x = a[0] * b[1] + a[1] * b[0] + a[2] * b[3] - a[3] * b[2];
+    const double y = a[0] * b[2] - a[1] * b[3] + a[2] * b[0] + a[3] * b[1];
+    const double z = a[0] * b[3] + a[1] * b[2] - a[2] * b[1] + a[3] * b[0];
+    out[0] = w; out[1] = x; out[2] = y; out[3] = z;
+}
+
 /* R[d][k] = axes[k][d]; the largest of w, x, y, z found first (Shepperd), for accuracy */
 void dem_quat_from_axes(const double axes[3][3], double q[4])
 {

@@ -24,6 +24,8 @@ void dem_quat_rotate(const double q[4], const double v[3], double out[3]);
 void dem_quat_rotate_inverse(const double q[4], const double v[3], double out[3]);
 /* the rotation matrix of q (body to space; rows: space components) */
 void dem_quat_matrix(const double q[4], double R[3][3]);
+/* out = a b (apply b, then a) */
+void dem_quat_multiply(const double a[4], const double b[4], double out[4]);
 /* q from the rows-are-axes matrix of dem_principal_axes (body axis k = axes[k] in space) */
 void dem_quat_from_axes(const double axes[3][3], double q[4]);
 

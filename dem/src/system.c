@@ -19,6 +19,7 @@ void dem_system_init(dem_system *s)
 void dem_system_free(dem_system *s)
 {
     dem_particles_free(&s->p);
+    dem_bodies_free(&s->bodies);
     dem_neighbour_free(&s->nlist);
     dem_walls_free(s);
     dem_ghosts_free(&s->ghosts);
@@ -99,6 +100,12 @@ long dem_system_setup_with_contacts(dem_system *s, const dem_contact_store *save
     dem_contact_rows_free(&s->carried);
     dem_contact_rows_init(&s->carried, s->history_size, s->nlist.history_antisymmetric);
     for (int d = 0; d < 3; d++) {
+        if (s->periodic[d] && s->bodies.n)
+            dem_fatal("multisphere bodies in a periodic direction (%c) are not supported yet: close the domain "
+                      "with walls", "xyz"[d]);
+        if (d == 0 && s->nsymmetry && s->bodies.n)
+            dem_fatal("multisphere bodies with symmetry planes are not supported yet (a plane mirrors spheres, "
+                      "not bodies)");
         s->period[d] = s->periodic[d] ? s->domain_max[d] - s->domain_min[d] : 0.0;
         s->inv_period[d] = s->periodic[d] ? 1.0 / s->period[d] : 0.0;
     }
@@ -135,6 +142,7 @@ static void add_contact_forces(dem_system *s)
     dem_pair_forces_add(s);
     dem_ghosts_fold_forces(s);
     dem_walls_add_forces(s);
+    if (s->bodies.n) dem_bodies_sum_forces(s);
 }
 
 void dem_system_compute_forces(dem_system *s)
@@ -162,23 +170,18 @@ static void half_kick(dem_particles *p, double dt)
 }
 
 /* First half of the velocity-Verlet step in one pass over the particles: half kick, drift,
- * the forces reset to gravity + external (the old forces are not needed after the kick), and
- * whether a particle moved more than half the skin since the last list build. Written so that
- * the compiler vectorises it: no reductions other than an integer or. With symmetry planes the
+ * the forces reset to gravity + external (the old forces are not needed after the kick). Written
+ * so that the compiler vectorises it: no reductions. With symmetry planes the
  * same pass mirrors, between drift and reset, the centres that crossed a plane (symmetry.h; the
  * bounce needs the old force); that loop has a branch and is kept apart, so that a case without
  * planes runs the vectorised one. */
-static int kick_drift_reset(dem_system *s)
+static void kick_drift_reset(dem_system *s)
 {
     dem_particles *p = &s->p;
     const double dt = s->dt, h = 0.5 * dt, g[3] = {s->gravity[0], s->gravity[1], s->gravity[2]};
-    const dem_vec3 *restrict x0 = s->nlist.x_at_build;
     dem_vec3 *restrict x = p->x, *restrict v = p->v, *restrict w = p->omega, *restrict f = p->f, *restrict t = p->torque;
     const dem_vec3 *restrict f_ext = p->f_ext;
     const double *restrict inv_mass = p->inv_mass, *restrict inv_inertia = p->inv_inertia, *restrict mass = p->mass;
-    const double limit = 0.25 * s->nlist.skin * s->nlist.skin;
-    const int listed = p->n < s->nlist.rows ? p->n : s->nlist.rows;   /* added since: rebuild */
-    int moved_far = p->n != s->nlist.rows;
     if (s->nsymmetry == 0) {
 #pragma GCC ivdep   /* the arrays do not overlap (restrict is not enough for GCC 12 here) */
         for (int i = 0; i < p->n; i++) {
@@ -206,6 +209,16 @@ static int kick_drift_reset(dem_system *s)
             }
         }
     }
+}
+
+/* Whether some particle moved more than half the skin since the last list build (or particles
+ * were added since). */
+static int moved_far_since_build(const dem_system *s)
+{
+    const dem_vec3 *restrict x = s->p.x, *restrict x0 = s->nlist.x_at_build;
+    const double limit = 0.25 * s->nlist.skin * s->nlist.skin;
+    const int listed = s->p.n < s->nlist.rows ? s->p.n : s->nlist.rows;   /* added since: rebuild */
+    int moved_far = s->p.n != s->nlist.rows;
     for (int i = 0; i < listed; i++) {
         const double dx = x[i][0] - x0[i][0], dy = x[i][1] - x0[i][1], dz = x[i][2] - x0[i][2];
         moved_far |= dx * dx + dy * dy + dz * dz > limit;
@@ -216,10 +229,13 @@ static int kick_drift_reset(dem_system *s)
 void dem_system_step(dem_system *s)
 {
     dem_particles *p = &s->p;
-    const int moved_far = kick_drift_reset(s);
+    kick_drift_reset(s);
+    if (s->bodies.n) dem_bodies_kick_drift(s);   /* the bodies' spheres put where their body is */
+    const int moved_far = moved_far_since_build(s);
     if (dem_walls_move(s, s->time + s->dt) || moved_far) rebuild(s);   /* walls at the end of the step */
     add_contact_forces(s);
     half_kick(p, s->dt);
+    if (s->bodies.n) dem_bodies_kick(s);
     s->time += s->dt;
     s->step++;
     if (s->max_overlap_seen > s->max_overlap_fraction || s->step % 256 == 0) dem_system_check_health(s);
@@ -265,8 +281,9 @@ void dem_system_check_health(const dem_system *s)
 double dem_system_kinetic_energy(const dem_system *s)
 {
     const dem_particles *p = &s->p;
-    double e = 0.0;
+    double e = dem_bodies_kinetic_energy(s);
     for (int i = 0; i < p->n; i++) {
+        if (p->body[i]) continue;   /* counted with its body */
         const double *v = p->v[i], *w = p->omega[i];
         e += 0.5 * p->mass[i] * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
         e += 0.5 / p->inv_inertia[i] * (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);

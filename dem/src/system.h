@@ -2,6 +2,7 @@
 #ifndef DEM_SYSTEM_H
 #define DEM_SYSTEM_H
 
+#include "bodies.h"
 #include "contact/models.h"
 #include "contacts.h"
 #include "ghosts.h"
@@ -13,6 +14,7 @@
 
 typedef struct dem_system {
     dem_particles p;
+    dem_bodies bodies;                    /* multisphere bodies; their spheres are in p (bodies.h) */
     dem_material_table materials;
     dem_contact_models models;
     int history_size;                 /* doubles per contact, from the models */
@@ -64,7 +66,8 @@ void dem_system_step(dem_system *s);
 void dem_system_compute_forces(dem_system *s);
 /* Stop with a message if a position or velocity is not finite or an overlap is too large. */
 void dem_system_check_health(const dem_system *s);
-/* Kinetic energy (translational + rotational) [J]. */
+/* Kinetic energy (translational + rotational) [J]: free spheres and bodies (a body's spheres
+ * only through their body). */
 double dem_system_kinetic_energy(const dem_system *s);
 
 /* Pair forces (pair_forces.c). */

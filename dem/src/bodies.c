@@ -1,0 +1,197 @@
+/* Multisphere bodies (bodies.h). */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "bodies.h"
+#include "error.h"
+#include "rigid_rotation.h"
+#include "system.h"
+
+void dem_bodies_free(dem_bodies *b)
+{
+    for (int t = 0; t < b->ntemplates; t++) {
+        free(b->templates[t].offset);
+        free(b->templates[t].radius);
+    }
+    free(b->templates);
+    free(b->template_of);
+    free(b->id);
+    free(b->x);
+    free(b->v);
+    free(b->q);
+    free(b->Lb);
+    free(b->f);
+    free(b->torque);
+    memset(b, 0, sizeof *b);
+}
+
+int dem_bodies_add_template(dem_bodies *b, const char *name, int n, const double (*x)[3], const double *radius,
+                            int type, double density, enum dem_clump_mass_model model)
+{
+    if (n < 1) dem_fatal("multisphere template '%s': no spheres", name);
+    b->templates = dem_realloc(b->templates, (size_t)(b->ntemplates + 1) * sizeof *b->templates);
+    dem_clump_template *t = &b->templates[b->ntemplates];
+    memset(t, 0, sizeof *t);
+    snprintf(t->name, sizeof t->name, "%s", name);
+    t->n = n;
+    t->type = type;
+    if (model == CLUMP_MASS_UNION) dem_clump_mass_union(n, x, radius, density, 1e-2, &t->mass);
+    else dem_clump_mass_sphere_sum(n, x, radius, density, &t->mass);
+    dem_quat_from_axes(t->mass.axes, t->q_axes);
+    t->offset = dem_malloc((size_t)n * sizeof *t->offset);
+    t->radius = dem_malloc((size_t)n * sizeof *t->radius);
+    for (int i = 0; i < n; i++) {
+        t->radius[i] = radius[i];
+        for (int k = 0; k < 3; k++) {   /* principal coordinates: the axes' components */
+            t->offset[i][k] = 0.0;
+            for (int d = 0; d < 3; d++) t->offset[i][k] += t->mass.axes[k][d] * (x[i][d] - t->mass.com[d]);
+        }
+    }
+    return b->ntemplates++;
+}
+
+static const dem_clump_template *template_of(const dem_bodies *b, int k) { return &b->templates[b->template_of[k]]; }
+
+void dem_body_omega(const dem_bodies *b, int k, double w[3])
+{
+    const double *I = template_of(b, k)->mass.principal;
+    const double wb[3] = {b->Lb[k][0] / I[0], b->Lb[k][1] / I[1], b->Lb[k][2] / I[2]};
+    dem_quat_rotate(b->q[k], wb, w);
+}
+
+/* The spheres of every body where their body is (positions only with `positions`), moving with it. */
+static void place_spheres(dem_system *s, int positions)
+{
+    dem_bodies *b = &s->bodies;
+    dem_particles *p = &s->p;
+    double (*R)[3][3] = dem_malloc((size_t)b->n * sizeof *R);
+    dem_vec3 *w = dem_malloc((size_t)b->n * sizeof *w);
+    for (int k = 0; k < b->n; k++) {
+        dem_quat_matrix(b->q[k], R[k]);
+        dem_body_omega(b, k, w[k]);
+    }
+    for (int i = 0; i < p->n; i++) {
+        if (!p->body[i]) continue;
+        const int k = p->body[i] - 1;
+        const double *o = p->body_offset[i];
+        double r[3];
+        for (int d = 0; d < 3; d++) r[d] = R[k][d][0] * o[0] + R[k][d][1] * o[1] + R[k][d][2] * o[2];
+        const double *wk = w[k];
+        const double wxr[3] = {wk[1] * r[2] - wk[2] * r[1], wk[2] * r[0] - wk[0] * r[2], wk[0] * r[1] - wk[1] * r[0]};
+        for (int d = 0; d < 3; d++) {
+            if (positions) p->x[i][d] = b->x[k][d] + r[d];
+            p->v[i][d] = b->v[k][d] + wxr[d];   /* seed 004 eq. 4 */
+            p->omega[i][d] = wk[d];
+        }
+    }
+    free(R);
+    free(w);
+}
+
+int dem_bodies_add(dem_system *s, int t, const double x[3], const double q_frame[4], const double v[3],
+                   const double w[3])
+{
+    dem_bodies *b = &s->bodies;
+    if (t < 0 || t >= b->ntemplates) dem_fatal("multisphere body: no template %d", t);
+    if (b->n == b->capacity) {
+        b->capacity = b->capacity ? 2 * b->capacity : 64;
+        b->template_of = dem_realloc(b->template_of, (size_t)b->capacity * sizeof *b->template_of);
+        b->id = dem_realloc(b->id, (size_t)b->capacity * sizeof *b->id);
+        b->x = dem_realloc(b->x, (size_t)b->capacity * sizeof *b->x);
+        b->v = dem_realloc(b->v, (size_t)b->capacity * sizeof *b->v);
+        b->q = dem_realloc(b->q, (size_t)b->capacity * sizeof *b->q);
+        b->Lb = dem_realloc(b->Lb, (size_t)b->capacity * sizeof *b->Lb);
+        b->f = dem_realloc(b->f, (size_t)b->capacity * sizeof *b->f);
+        b->torque = dem_realloc(b->torque, (size_t)b->capacity * sizeof *b->torque);
+    }
+    const int k = b->n++;
+    const dem_clump_template *tp = &b->templates[t];
+    b->template_of[k] = t;
+    b->id[k] = k;
+    dem_quat_multiply(q_frame, tp->q_axes, b->q[k]);   /* principal -> template frame -> space */
+    double wb[3];
+    dem_quat_rotate_inverse(b->q[k], w, wb);
+    for (int d = 0; d < 3; d++) {
+        b->x[k][d] = x[d];
+        b->v[k][d] = v[d];
+        b->Lb[k][d] = tp->mass.principal[d] * wb[d];
+        b->f[k][d] = b->torque[k][d] = 0.0;
+    }
+    const double M = tp->mass.mass;
+    for (int i = 0; i < tp->n; i++) {
+        const double zero[3] = {0.0, 0.0, 0.0};
+        const int j = dem_particles_add(&s->p, zero, zero, tp->radius[i], 1.0, tp->type, s->next_id++);
+        s->p.body[j] = k + 1;
+        for (int d = 0; d < 3; d++) s->p.body_offset[j][d] = tp->offset[i][d];
+        /* the body's mass: m* of its contacts and the time-step check see the body */
+        s->p.mass[j] = M;
+        s->p.inv_mass[j] = 1.0 / M;
+        s->p.inv_inertia[j] = 1.0 / (0.4 * M * tp->radius[i] * tp->radius[i]);
+    }
+    place_spheres(s, 1);
+    return k;
+}
+
+void dem_bodies_sum_forces(dem_system *s)
+{
+    dem_bodies *b = &s->bodies;
+    const dem_particles *p = &s->p;
+    for (int k = 0; k < b->n; k++) {
+        const double M = template_of(b, k)->mass.mass;
+        for (int d = 0; d < 3; d++) {
+            b->f[k][d] = M * s->gravity[d];   /* gravity once, with the body's mass */
+            b->torque[k][d] = 0.0;
+        }
+    }
+    for (int i = 0; i < p->n; i++) {
+        if (!p->body[i]) continue;
+        const int k = p->body[i] - 1;
+        const double *fi = p->f[i];
+        const double r[3] = {p->x[i][0] - b->x[k][0], p->x[i][1] - b->x[k][1], p->x[i][2] - b->x[k][2]};
+        for (int d = 0; d < 3; d++) b->f[k][d] += fi[d] - p->mass[i] * s->gravity[d];   /* its own gravity out */
+        b->torque[k][0] += r[1] * fi[2] - r[2] * fi[1] + p->torque[i][0];
+        b->torque[k][1] += r[2] * fi[0] - r[0] * fi[2] + p->torque[i][1];
+        b->torque[k][2] += r[0] * fi[1] - r[1] * fi[0] + p->torque[i][2];
+    }
+}
+
+static void half_kick(dem_bodies *b, double h)
+{
+    for (int k = 0; k < b->n; k++) {
+        const double inv_m = 1.0 / template_of(b, k)->mass.mass;
+        for (int d = 0; d < 3; d++) b->v[k][d] += h * inv_m * b->f[k][d];
+        dem_rigid_kick(b->q[k], b->Lb[k], b->torque[k], h);
+    }
+}
+
+void dem_bodies_kick_drift(dem_system *s)
+{
+    dem_bodies *b = &s->bodies;
+    half_kick(b, 0.5 * s->dt);
+    for (int k = 0; k < b->n; k++) {
+        for (int d = 0; d < 3; d++) b->x[k][d] += s->dt * b->v[k][d];
+        dem_rigid_free_rotation(template_of(b, k)->mass.principal, b->q[k], b->Lb[k], s->dt);
+    }
+    place_spheres(s, 1);
+}
+
+void dem_bodies_kick(dem_system *s)
+{
+    half_kick(&s->bodies, 0.5 * s->dt);
+    place_spheres(s, 0);
+}
+
+double dem_bodies_kinetic_energy(const dem_system *s)
+{
+    const dem_bodies *b = &s->bodies;
+    double e = 0.0;
+    for (int k = 0; k < b->n; k++) {
+        const dem_clump_mass *m = &template_of(b, k)->mass;
+        const double *v = b->v[k], *L = b->Lb[k], *I = m->principal;
+        e += 0.5 * m->mass * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+        e += 0.5 * (L[0] * L[0] / I[0] + L[1] * L[1] / I[1] + L[2] * L[2] / I[2]);   /* eq. 8, principal frame */
+    }
+    return e;
+}

@@ -1,0 +1,73 @@
+/* Multisphere bodies: rigid clumps of spheres (docs/models/multisphere.md).
+ *
+ * A template is the clump's spheres in its own frame, reduced once to mass properties
+ * (clump_mass.h) and to the spheres' centres in the principal frame. A body is a template placed
+ * in the system: centre of mass X, velocity V, orientation q (principal frame to space), angular
+ * momentum L_b in the principal frame (rigid_rotation.h). Its spheres are ordinary particles
+ * (field `body` = 1 + the body's index, `body_offset` = the centre in the principal frame), so
+ * the neighbour list, the contact models, the walls and the output treat them as spheres; the
+ * list leaves out pairs of one body.
+ *
+ * Each sphere carries the body's mass (so a contact's effective mass m* and the time-step check
+ * see the body: LIGGGHTS' fix multisphere does the same) and moves with the body: after each
+ * drift its centre is X + R(q) offset, its velocity V + omega x R(q) offset and its angular
+ * velocity omega = R(q) L_b / I (seed 004 eq. 4). The spheres' forces and torques are summed
+ * onto the body, gravity once with the body's mass, and the body takes the velocity-Verlet step
+ * (translation) and the split free rotor between two torque kicks (rotation).
+ *
+ * Not yet: periodic directions with bodies (refused), templates and insertion in demProperties,
+ * the bodies in the snapshots and restart, the coupling. */
+#ifndef DEM_BODIES_H
+#define DEM_BODIES_H
+
+#include <stdint.h>
+
+#include "clump_mass.h"
+#include "particles.h"
+
+typedef struct dem_clump_template {
+    char name[64];
+    int n;                      /* spheres */
+    double (*offset)[3];        /* centres in the principal frame, from the centre of mass [m] */
+    double *radius;             /* [m] */
+    int type;                   /* material index */
+    double q_axes[4];           /* principal frame to the template's own frame */
+    dem_clump_mass mass;        /* mass, inertia, principal moments (template frame) */
+} dem_clump_template;
+
+typedef struct dem_bodies {
+    int ntemplates;
+    dem_clump_template *templates;
+    int n, capacity;
+    int *template_of;
+    int64_t *id;
+    dem_vec3 *x, *v;            /* centre of mass [m], its velocity [m/s] */
+    double (*q)[4];             /* orientation: principal frame to space */
+    dem_vec3 *Lb;               /* angular momentum, principal frame [kg m^2/s] */
+    dem_vec3 *f, *torque;       /* total force [N] and torque about the centre [N m] of the step */
+} dem_bodies;
+
+struct dem_system;
+void dem_bodies_free(dem_bodies *b);
+/* A template from its spheres in its own frame; density in kg/m^3; model: union or sphereSum
+ * (union to 1 % of its volume, clump_mass.h). Returns its index. */
+int dem_bodies_add_template(dem_bodies *b, const char *name, int n, const double (*x)[3], const double *radius,
+                            int type, double density, enum dem_clump_mass_model model);
+/* A body of template t with its centre of mass at x, the template's frame turned by q_frame
+ * (unit quaternion; template frame to space), velocity v [m/s] and angular velocity w [rad/s]
+ * (space frame); its spheres are appended to the particles. Returns the body's index. */
+int dem_bodies_add(struct dem_system *s, int t, const double x[3], const double q_frame[4], const double v[3],
+                   const double w[3]);
+
+/* The step's parts (system.c calls them): first half kick and drift of each body, its spheres
+ * put where it is; after the forces, their sum onto the bodies (also at set-up); the second half
+ * kick, the spheres' velocities from it. */
+void dem_bodies_kick_drift(struct dem_system *s);
+void dem_bodies_sum_forces(struct dem_system *s);
+void dem_bodies_kick(struct dem_system *s);
+/* A body's angular velocity in space [rad/s] */
+void dem_body_omega(const dem_bodies *b, int k, double w[3]);
+/* Translational + rotational kinetic energy of all bodies [J] (eq. 8 with the principal tensor) */
+double dem_bodies_kinetic_energy(const struct dem_system *s);
+
+#endif
