@@ -159,6 +159,7 @@ void dem_neighbour_rebuild(dem_system *s)
     const int *body = p->body;
     for (int i = 0; i < p->n; i++) {
         nl->start[i] = (int)nl->npairs;
+        const int body_i = body[i];
         const int c = nl->cell_of[i];
         const int cx = c % nx, cy = (c / nx) % ny, cz = c / (nx * ny);
         for (int z = cz - 1; z <= cz + 1; z++) {
@@ -174,7 +175,7 @@ void dem_neighbour_rebuild(dem_system *s)
                          * (j's owner with the image of i) exists too, and only the one whose real
                          * particle has the lower id is kept */
                         if (j < p->n ? j <= i : id[j] <= id[i]) continue;
-                        if (body[i] && body[i] == body[j]) continue;   /* one rigid body: no contact */
+                        if (body_i && body_i == body[j]) continue;   /* one rigid body: no contact */
                         double d2 = 0.0;
                         for (int d = 0; d < 3; d++) {
                             const double dx = p->x[i][d] - p->x[j][d];
