@@ -408,6 +408,59 @@ static void read_spacing(const dem_dict *e, dem_insertion *ins)
                    ins->dist == SIZE_CONSTANT ? "" : " (the distribution's largest)");
 }
 
+/* multisphere { <name> { material m; centres ((x y z) ...); radii (r ...); massModel union; } ... }:
+ * the templates of multisphere bodies, their spheres in the template's own frame [m]. */
+static void read_multisphere(const dem_dict *root, dem_system *s)
+{
+    const dem_dict *d = dem_dict_sub_opt(root, "multisphere");
+    if (!d) return;
+    static const char *const models[] = {"union", "sphereSum", 0};
+    for (int i = 0; i < dem_dict_size(d); i++) {
+        const char *name = dem_dict_key_at(d, i);
+        if (!dem_dict_is_dict_at(d, i)) dem_dict_fatal(d, name, "a multisphere template is a sub-dictionary");
+        const dem_dict *e = dem_dict_dict_at(d, i);
+        const int material = particle_material_of(e, &s->materials);
+        double *c = NULL, *r = NULL;
+        const int n = dem_dict_vector_list(e, "centres", &c);
+        const int nr = dem_dict_scalar_list(e, "radii", &r);
+        if (n < 1) dem_dict_fatal(e, "centres", "give at least one sphere centre, e.g. ((0 0 0) (0.002 0 0)) [m]");
+        if (nr != n) dem_dict_fatal(e, "radii", "%d radii for %d centres", nr, n);
+        for (int k = 0; k < n; k++) {
+            if (!(r[k] >= 1e-9 && r[k] <= 10.0))
+                dem_dict_fatal(e, "radii", "radius %d is %g m: allowed [1e-9, 10] m", k + 1, r[k]);
+            for (int q = 0; q < 3; q++)
+                if (!(fabs(c[3 * k + q]) <= 10.0))
+                    dem_dict_fatal(e, "centres", "centre %d lies %g m from the template's origin: allowed 10 m", k + 1,
+                                   c[3 * k + q]);
+        }
+        /* the spheres must make one body: each one touches or overlaps another */
+        for (int k = 0; k < n && n > 1; k++) {
+            int joined = 0;
+            for (int m = 0; m < n && !joined; m++) {
+                if (m == k) continue;
+                const double dx = c[3 * k] - c[3 * m], dy = c[3 * k + 1] - c[3 * m + 1], dz = c[3 * k + 2] - c[3 * m + 2];
+                joined = sqrt(dx * dx + dy * dy + dz * dz) <= r[k] + r[m];
+            }
+            if (!joined)
+                dem_dict_fatal(e, "centres", "sphere %d touches no other sphere of '%s': a template is one body", k + 1, name);
+        }
+        const int model = dem_dict_choice_opt(e, "massModel", models, CLUMP_MASS_UNION);
+        dem_bodies_add_template(&s->bodies, name, n, (const double (*)[3])c, r, material,
+                                s->materials.mat[material].density, (enum dem_clump_mass_model)model);
+        free(c);
+        free(r);
+    }
+}
+
+static int template_of(const dem_dict *e, const dem_system *s)
+{
+    const char *name = dem_dict_word(e, "body");
+    for (int t = 0; t < s->bodies.ntemplates; t++)
+        if (strcmp(s->bodies.templates[t].name, name) == 0) return t;
+    dem_dict_fatal(e, "body", "'%s' is not among the multisphere templates", name);
+    return -1;
+}
+
 static void run_insertions(const dem_dict *root, dem_system *s, int insert, const char *constant_dir)
 {
     const dem_dict *d = dem_dict_sub_opt(root, "insertion");
@@ -442,8 +495,16 @@ static void run_insertions(const dem_dict *root, dem_system *s, int insert, cons
             if (ins.has_diameter) read_diameter(e, &ins);
         } else {
             read_region(e, &ins);
-            ins.material = particle_material_of(e, &s->materials);
-            read_diameter(e, &ins);
+            if (ins.method == INSERT_RANDOM && dem_dict_has(e, "body")) {   /* multisphere bodies */
+                ins.body = 1 + template_of(e, s);
+                if (!insert)
+                    dem_dict_fatal(e, "body", "a run with multisphere bodies cannot continue from a snapshot yet "
+                                   "(the bodies are not in it): start it anew");
+                ins.material = s->bodies.templates[ins.body - 1].type;
+            } else {
+                ins.material = particle_material_of(e, &s->materials);
+                read_diameter(e, &ins);
+            }
             if (ins.method == INSERT_RANDOM) {
                 if (dem_dict_has(e, "number") == dem_dict_has(e, "solidFraction"))
                     dem_dict_fatal_here(e, "give exactly one of 'number' and 'solidFraction'");
@@ -474,7 +535,12 @@ static void run_insertions(const dem_dict *root, dem_system *s, int insert, cons
         }
         if (insert) {   /* skipped on restart: the particles come from the snapshot */
             switch (ins.method) {
-            case INSERT_RANDOM: dem_info("insertion '%s': %ld particles", name, dem_insertion_run(s, &ins)); break;
+            case INSERT_RANDOM:
+                if (ins.body)
+                    dem_info("insertion '%s': %ld multisphere bodies '%s'", name, dem_insertion_run(s, &ins),
+                             s->bodies.templates[ins.body - 1].name);
+                else dem_info("insertion '%s': %ld particles", name, dem_insertion_run(s, &ins));
+                break;
             case INSERT_LATTICE:
                 dem_info("insertion '%s': %ld particles (lattice)", name, dem_insertion_lattice(s, &ins, e));
                 break;
@@ -528,6 +594,7 @@ void dem_case_read(const char *case_dir, dem_system *s, dem_run_settings *rs, in
     read_models(root, s);
     read_interactions(root, s);
     read_walls(root, s);
+    read_multisphere(root, s);
     char constant_dir[4200];
     snprintf(constant_dir, sizeof constant_dir, "%s/constant", case_dir);
     run_insertions(root, s, !skip_insertion, constant_dir);

@@ -9,6 +9,7 @@
 #include "dict.h"
 #include "error.h"
 #include "insert.h"
+#include "rigid_rotation.h"
 #include "rng.h"
 #include "system.h"
 
@@ -183,8 +184,86 @@ static int overlaps(const dem_system *s, const grid *g, const double x[3], doubl
     return 0;
 }
 
+/* A uniformly random rotation (Shoemake, Graphics Gems III, 1992: uniform on the unit 3-sphere). */
+static void draw_orientation(dem_rng *r, double q[4])
+{
+    const double u1 = rng_uniform(r), u2 = 2.0 * M_PI * rng_uniform(r), u3 = 2.0 * M_PI * rng_uniform(r);
+    q[0] = sqrt(1.0 - u1) * sin(u2);
+    q[1] = sqrt(1.0 - u1) * cos(u2);
+    q[2] = sqrt(u1) * sin(u3);
+    q[3] = sqrt(u1) * cos(u3);
+}
+
+/* Random insertion of multisphere bodies of one template: a centre in the region (kept its
+ * bounding radius from the sides), a random orientation, accepted when none of its spheres
+ * overlaps a particle, wall or mirror already there. */
+static long insert_bodies(dem_system *s, const dem_insertion *ins)
+{
+    dem_particles *p = &s->p;
+    const dem_clump_template *t = &s->bodies.templates[ins->body - 1];
+    double bound = 0.0, dmax = 0.0;
+    for (int k = 0; k < t->n; k++) {
+        const double *o = t->offset[k];
+        bound = fmax(bound, sqrt(o[0] * o[0] + o[1] * o[1] + o[2] * o[2]) + t->radius[k]);
+        dmax = fmax(dmax, 2.0 * t->radius[k]);
+    }
+    for (int i = 0; i < p->n; i++) dmax = fmax(dmax, 2.0 * p->radius[i]);
+    const double extent = ins->region == REGION_BOX
+        ? fmin(fmin(ins->max[0] - ins->min[0], ins->max[1] - ins->min[1]), ins->max[2] - ins->min[2])
+        : fmin(2.0 * ins->radius, ins->max[ins->axis] - ins->min[ins->axis]);
+    if (extent < 2.0 * bound)
+        dem_fatal_at(ins->source[0] ? ins->source : NULL, "insertion '%s': the region (smallest extent %g m) is smaller "
+                     "than the body '%s' (%g m across)", ins->name, extent, t->name, 2.0 * bound);
+    const long target = ins->number > 0 ? ins->number : -1;
+    const double target_volume = ins->solid_fraction * region_volume(ins);
+    const long expected_bodies = target > 0 ? target : (long)(target_volume / t->mass.volume) + 1;
+    long capacity = p->n + expected_bodies * t->n + t->n;
+    grid g;
+    grid_init(&g, s, dmax, p->n + expected_bodies * t->n, capacity);
+    for (int i = 0; i < p->n; i++) grid_add(&g, p, i);
+    dem_rng r;
+    rng_seed(&r, ins->seed);
+    long placed = 0;
+    double volume = 0.0;
+    double (*centre)[3] = dem_malloc((size_t)t->n * sizeof *centre);
+    while (target > 0 ? placed < target : volume < target_volume) {
+        double x[3], q[4], qb[4];
+        int ok = 0;
+        for (int attempt = 0; attempt < ins->max_attempts && !ok; attempt++) {
+            draw_position(ins, bound, &r, x);
+            draw_orientation(&r, q);
+            dem_quat_multiply(q, t->q_axes, qb);
+            ok = 1;
+            for (int k = 0; k < t->n && ok; k++) {
+                dem_quat_rotate(qb, t->offset[k], centre[k]);
+                for (int d = 0; d < 3; d++) centre[k][d] += x[d];
+                ok = !overlaps(s, &g, centre[k], t->radius[k]);
+            }
+        }
+        if (!ok)
+            dem_fatal_at(ins->source[0] ? ins->source : NULL, "insertion '%s': placed only %ld bodies '%s' (solid fraction "
+                         "%.3f of the region) before one found no free place in %d attempts. Enlarge the region, lower "
+                         "number/solidFraction, or raise maxAttempts.",
+                         ins->name, placed, t->name, volume / region_volume(ins), ins->max_attempts);
+        if (p->n + t->n > capacity) {
+            capacity = 2 * capacity + t->n;
+            g.next = dem_realloc(g.next, (size_t)capacity * sizeof(int));
+        }
+        const double w[3] = {0.0, 0.0, 0.0};
+        dem_bodies_add(s, ins->body - 1, x, q, ins->velocity, w);
+        for (int i = p->n - t->n; i < p->n; i++) grid_add(&g, p, i);
+        placed++;
+        volume += t->mass.volume;
+    }
+    free(centre);
+    free(g.head);
+    free(g.next);
+    return placed;
+}
+
 long dem_insertion_run(dem_system *s, const dem_insertion *ins)
 {
+    if (ins->body > 0) return insert_bodies(s, ins);
     dem_particles *p = &s->p;
     double dmax = dem_insertion_max_diameter(ins);
     for (int i = 0; i < p->n; i++) dmax = fmax(dmax, 2.0 * p->radius[i]);

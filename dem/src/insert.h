@@ -1,6 +1,7 @@
 /* Insertion: fill a region once, at t = 0, without overlaps. Three methods:
  *   random   random sequential placement into a box or cylinder region, a given number or up
- *            to a solid fraction, with a size distribution (insert.c);
+ *            to a solid fraction, with a size distribution (insert.c); or multisphere bodies of
+ *            one template, each turned to a uniformly random orientation;
  *   lattice  the points of a simple cubic (or rectangular) lattice in a box or cylinder region,
  *            all of them or the lowest `number` along gravity (insert_lattice.c);
  *   file     positions (and optionally diameters, velocities, materials) read from a file,
@@ -31,6 +32,7 @@ typedef struct dem_insertion {
     long number;                    /* > 0: this many particles (lattice: the lowest this many; 0: all) */
     double solid_fraction;          /* random: else fill to this solid fraction of the region */
     int material;                   /* -1: none given (file: then every line must name one) */
+    int body;                       /* random: 1 + the multisphere template (bodies.h) to insert; 0: spheres */
     double velocity[3];
     int prescribed;                 /* 1: velocity is prescribedVelocity (the particles keep it) */
     int has_diameter;               /* file: a diameter entry was given */
