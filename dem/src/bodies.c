@@ -195,3 +195,90 @@ double dem_bodies_kinetic_energy(const dem_system *s)
     }
     return e;
 }
+
+/* The rotational energy of body k: 1/2 sum L_b^2 / I over the principal axes (seed 004 eq. 8) */
+static double rotational_energy(const dem_bodies *b, int k)
+{
+    const double *L = b->Lb[k], *I = template_of(b, k)->mass.principal;
+    return 0.5 * (L[0] * L[0] / I[0] + L[1] * L[1] / I[1] + L[2] * L[2] / I[2]);
+}
+
+void dem_bodies_to_state(const dem_system *s, dem_body_state *st)
+{
+    const dem_bodies *b = &s->bodies;
+    memset(st, 0, sizeof *st);
+    st->count = b->n;
+    const size_t n = (size_t)(b->n ? b->n : 1);
+    st->id = dem_malloc(n * sizeof(int64_t));
+    st->template_of = dem_malloc(n * sizeof(int64_t));
+    st->x = dem_malloc(n * 3 * sizeof(double));
+    st->v = dem_malloc(n * 3 * sizeof(double));
+    st->q = dem_malloc(n * 4 * sizeof(double));
+    st->Lb = dem_malloc(n * 3 * sizeof(double));
+    st->omega = dem_malloc(n * 3 * sizeof(double));
+    st->f = dem_malloc(n * 3 * sizeof(double));
+    st->torque = dem_malloc(n * 3 * sizeof(double));
+    st->e_rot = dem_malloc(n * sizeof(double));
+    for (int k = 0; k < b->n; k++) {
+        st->id[k] = b->id[k];
+        st->template_of[k] = b->template_of[k];
+        double w[3];
+        dem_body_omega(b, k, w);
+        for (int d = 0; d < 3; d++) {
+            st->x[3 * k + d] = b->x[k][d];
+            st->v[3 * k + d] = b->v[k][d];
+            st->Lb[3 * k + d] = b->Lb[k][d];
+            st->omega[3 * k + d] = w[d];
+            st->f[3 * k + d] = b->f[k][d];
+            st->torque[3 * k + d] = b->torque[k][d];
+        }
+        for (int d = 0; d < 4; d++) st->q[4 * k + d] = b->q[k][d];
+        st->e_rot[k] = rotational_energy(b, k);
+    }
+}
+
+void dem_bodies_from_state(dem_system *s, const dem_body_state *st, const char *where)
+{
+    dem_bodies *b = &s->bodies;
+    b->n = 0;
+    for (long k = 0; k < st->count; k++) {
+        const int64_t t = st->template_of[k];
+        if (t < 0 || t >= b->ntemplates)
+            dem_fatal("%s: body %ld has template %lld, but the case defines %d multisphere templates", where, k,
+                      (long long)t, b->ntemplates);
+        /* grown as dem_bodies_add grows it; no spheres added: they are in the snapshot */
+        if (b->n == b->capacity) {
+            b->capacity = b->capacity ? 2 * b->capacity : 64;
+            b->template_of = dem_realloc(b->template_of, (size_t)b->capacity * sizeof *b->template_of);
+            b->id = dem_realloc(b->id, (size_t)b->capacity * sizeof *b->id);
+            b->x = dem_realloc(b->x, (size_t)b->capacity * sizeof *b->x);
+            b->v = dem_realloc(b->v, (size_t)b->capacity * sizeof *b->v);
+            b->q = dem_realloc(b->q, (size_t)b->capacity * sizeof *b->q);
+            b->Lb = dem_realloc(b->Lb, (size_t)b->capacity * sizeof *b->Lb);
+            b->f = dem_realloc(b->f, (size_t)b->capacity * sizeof *b->f);
+            b->torque = dem_realloc(b->torque, (size_t)b->capacity * sizeof *b->torque);
+        }
+        const int j = b->n++;
+        b->template_of[j] = (int)t;
+        b->id[j] = st->id[k];
+        for (int d = 0; d < 3; d++) {
+            b->x[j][d] = st->x[3 * k + d];
+            b->v[j][d] = st->v[3 * k + d];
+            b->Lb[j][d] = st->Lb[3 * k + d];
+            b->f[j][d] = st->f[3 * k + d];
+            b->torque[j][d] = st->torque[3 * k + d];
+        }
+        for (int d = 0; d < 4; d++) b->q[j][d] = st->q[4 * k + d];
+    }
+    dem_particles *p = &s->p;
+    for (int i = 0; i < p->n; i++) {
+        if (!p->body[i]) continue;
+        if (p->body[i] < 0 || p->body[i] > b->n)
+            dem_fatal("%s: particle id %lld belongs to body %d, but the snapshot has %d bodies", where,
+                      (long long)p->id[i], p->body[i] - 1, b->n);
+        const double M = template_of(b, p->body[i] - 1)->mass.mass;
+        p->mass[i] = M;
+        p->inv_mass[i] = 1.0 / M;
+        p->inv_inertia[i] = 1.0 / (0.4 * M * p->radius[i] * p->radius[i]);
+    }
+}

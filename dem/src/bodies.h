@@ -15,14 +15,15 @@
  * onto the body, gravity once with the body's mass, and the body takes the velocity-Verlet step
  * (translation) and the split free rotor between two torque kicks (rotation).
  *
- * Not yet: periodic directions with bodies (refused), templates and insertion in demProperties,
- * the bodies in the snapshots and restart, the coupling. */
+ * Not yet: periodic directions and symmetry planes with bodies (refused), lattice and file
+ * insertion of bodies, the coupling. */
 #ifndef DEM_BODIES_H
 #define DEM_BODIES_H
 
 #include <stdint.h>
 
 #include "clump_mass.h"
+#include "io.h"
 #include "particles.h"
 
 typedef struct dem_clump_template {
@@ -65,6 +66,12 @@ int dem_bodies_add(struct dem_system *s, int t, const double x[3], const double 
 void dem_bodies_kick_drift(struct dem_system *s);
 void dem_bodies_sum_forces(struct dem_system *s);
 void dem_bodies_kick(struct dem_system *s);
+/* The bodies as a snapshot holds them (io.h), with each body's rotational energy (seed 004
+ * eq. 8); and back, at a restart: the body table rebuilt (the templates come from the case) and
+ * the spheres' masses set to their body's. Fatal, naming `where`, when the snapshot does not fit
+ * the case's templates. */
+void dem_bodies_to_state(const struct dem_system *s, dem_body_state *state);
+void dem_bodies_from_state(struct dem_system *s, const dem_body_state *state, const char *where);
 /* A body's angular velocity in space [rad/s] */
 void dem_body_omega(const dem_bodies *b, int k, double w[3]);
 /* Translational + rotational kinetic energy of all bodies [J] (eq. 8 with the principal tensor) */

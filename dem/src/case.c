@@ -497,9 +497,6 @@ static void run_insertions(const dem_dict *root, dem_system *s, int insert, cons
             read_region(e, &ins);
             if (ins.method == INSERT_RANDOM && dem_dict_has(e, "body")) {   /* multisphere bodies */
                 ins.body = 1 + template_of(e, s);
-                if (!insert)
-                    dem_dict_fatal(e, "body", "a run with multisphere bodies cannot continue from a snapshot yet "
-                                   "(the bodies are not in it): start it anew");
                 ins.material = s->bodies.templates[ins.body - 1].type;
             } else {
                 ins.material = particle_material_of(e, &s->materials);

@@ -24,7 +24,19 @@
 
 typedef struct dem_particle_writer dem_particle_writer;
 
-/* Contact history in a form independent of particle order and neighbour lists (contacts.h). */
+/* Multisphere bodies of a snapshot (bodies.h), written as /snapshots/<k>/bodies/ with one
+ * dataset per column group: id and template (int64), position [m], velocity [m/s], orientation
+ * (quaternion w x y z, principal frame to space), angular_momentum_body [kg m^2/s] (principal
+ * frame), omega [rad/s], force [N], torque [N m] (about the centre of mass), rotational_energy [J]
+ * (seed 004 eq. 8). A restart rebuilds the bodies from it; their spheres are particles. */
+typedef struct dem_body_state {
+    long count;
+    int64_t *id, *template_of;
+    double *x, *v, *q, *Lb, *omega, *f, *torque, *e_rot;   /* 3 per body; q 4; e_rot 1 */
+} dem_body_state;
+
+/* Contact history in a form independent of particle order and neighbour lists (contacts.h),
+ * and the snapshot's other non-particle state (the bodies). */
 typedef struct dem_contact_state {
     int history_size;        /* doubles per contact */
     int nwalls;              /* walls of the case that wrote it (wall contacts name their index) */
@@ -33,6 +45,7 @@ typedef struct dem_contact_state {
     double *history;         /* history_size per contact */
     int forces_read;         /* reader: p->f and p->torque hold the snapshot's forces */
     int coupling_read;       /* reader: p->beta and p->f_fluid hold the snapshot's (coupled runs) */
+    dem_body_state bodies;   /* multisphere bodies (count 0: none) */
 } dem_contact_state;
 
 void dem_contact_state_free(dem_contact_state *cs);

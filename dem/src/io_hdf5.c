@@ -416,10 +416,18 @@ static void write_field(hid_t group, const dem_particle_field *pf, const dem_par
     H5Sclose(space);
 }
 
+static void body_state_free(dem_body_state *b)
+{
+    free(b->id); free(b->template_of); free(b->x); free(b->v); free(b->q); free(b->Lb); free(b->omega);
+    free(b->f); free(b->torque); free(b->e_rot);
+    memset(b, 0, sizeof *b);
+}
+
 void dem_contact_state_free(dem_contact_state *cs)
 {
     free(cs->keys);
     free(cs->history);
+    body_state_free(&cs->bodies);
     memset(cs, 0, sizeof *cs);
 }
 
@@ -457,6 +465,34 @@ static void write_contacts(hid_t g, const dem_contact_state *cs, const char *pat
     H5Gclose(c);
 }
 
+/* The columns of a body state: name, units, components, where. */
+#define BODY_COLUMNS(X, b)                                                  \
+    X("position", "m", 3, (b)->x)                                           \
+    X("velocity", "m/s", 3, (b)->v)                                         \
+    X("orientation", "1", 4, (b)->q)                                        \
+    X("angular_momentum_body", "kg m^2/s", 3, (b)->Lb)                      \
+    X("omega", "rad/s", 3, (b)->omega)                                      \
+    X("force", "N", 3, (b)->f)                                              \
+    X("torque", "N m", 3, (b)->torque)                                      \
+    X("rotational_energy", "J", 1, (b)->e_rot)
+
+static void write_bodies(hid_t g, const dem_body_state *b, const char *path)
+{
+    hid_t c = chk(H5Gcreate2(g, "bodies", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), path, "cannot create bodies group");
+    write_matrix(c, "id", H5T_STD_I64LE, H5T_NATIVE_INT64, b->id, b->count, 1, path);
+    write_matrix(c, "template", H5T_STD_I64LE, H5T_NATIVE_INT64, b->template_of, b->count, 1, path);
+#define WRITE_BODY_COLUMN(name, units, cols, data)                                                  \
+    {                                                                                               \
+        write_matrix(c, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, data, b->count, cols, path);       \
+        hid_t d = chk(H5Dopen2(c, name, H5P_DEFAULT), path, "cannot open dataset");                 \
+        write_string_attr(d, "units", units, path);                                                 \
+        H5Dclose(d);                                                                                \
+    }
+    BODY_COLUMNS(WRITE_BODY_COLUMN, b)
+#undef WRITE_BODY_COLUMN
+    H5Gclose(c);
+}
+
 void dem_io_write_snapshot(dem_particle_writer *w, const dem_particles *p, double time, long step)
 {
     dem_io_write_snapshot_contacts(w, p, time, step, NULL);
@@ -478,6 +514,7 @@ void dem_io_write_snapshot_contacts(dem_particle_writer *w, const dem_particles 
     for (int k = 0; k < PARTICLE_FIELD_COUNT; k++)
         if (dem_particle_fields[k].flags & (PF_WRITE | PF_RESTART)) write_field(g, &dem_particle_fields[k], p, n, path);
     if (cs && cs->history_size > 0) write_contacts(g, cs, path);
+    if (cs && cs->bodies.count > 0) write_bodies(g, &cs->bodies, path);
 
     const long long step_ll = step;
     write_scalar_attr(g, "time", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &time, path);
@@ -572,7 +609,7 @@ static void *read_matrix(hid_t group, const char *name, hid_t mem_type, size_t e
     hsize_t dims[2] = {0, 0};
     if (H5Sget_simple_extent_ndims(space) != 2 || H5Sget_simple_extent_dims(space, dims, NULL) < 0 ||
         (int64_t)dims[1] != cols)
-        dem_fatal("HDF5 file '%s': dataset 'contacts/%s' has the wrong shape (expected N x %" PRId64 ")",
+        dem_fatal("HDF5 file '%s': dataset '%s' has the wrong shape (expected N x %" PRId64 ")",
                   path, name, cols);
     *rows = (int64_t)dims[0];
     void *data = dem_malloc((size_t)(*rows * cols) * elem);
@@ -604,6 +641,27 @@ static void read_contacts(hid_t g, dem_contact_state *cs, const char *path)
     cs->history = read_matrix(c, "history", H5T_NATIVE_DOUBLE, sizeof(double), cs->history_size, &rows, path);
     if (rows != cs->count)
         dem_fatal("HDF5 file '%s': contacts/history has %" PRId64 " rows for %ld keys", path, rows, cs->count);
+    H5Gclose(c);
+}
+
+static void read_bodies(hid_t g, dem_body_state *b, const char *path)
+{
+    memset(b, 0, sizeof *b);
+    if (!chk(H5Lexists(g, "bodies", H5P_DEFAULT), path, "cannot query bodies group")) return;
+    hid_t c = chk(H5Gopen2(g, "bodies", H5P_DEFAULT), path, "cannot open bodies group");
+    int64_t rows;
+    b->id = read_matrix(c, "id", H5T_NATIVE_INT64, sizeof(int64_t), 1, &rows, path);
+    b->count = (long)rows;
+    b->template_of = read_matrix(c, "template", H5T_NATIVE_INT64, sizeof(int64_t), 1, &rows, path);
+    if (rows != b->count) dem_fatal("HDF5 file '%s': bodies/template has %" PRId64 " rows for %ld bodies", path, rows, b->count);
+#define READ_BODY_COLUMN(name, units, cols, data)                                                       \
+    {                                                                                                   \
+        data = read_matrix(c, name, H5T_NATIVE_DOUBLE, sizeof(double), cols, &rows, path);              \
+        if (rows != b->count)                                                                           \
+            dem_fatal("HDF5 file '%s': bodies/%s has %" PRId64 " rows for %ld bodies", path, name, rows, b->count); \
+    }
+    BODY_COLUMNS(READ_BODY_COLUMN, b)
+#undef READ_BODY_COLUMN
     H5Gclose(c);
 }
 
@@ -662,6 +720,7 @@ int dem_io_read_snapshot_at(const char *base, double at_time, double tolerance, 
     read_restart_fields(g, p, n, name, path, found);
     if (cs) {
         read_contacts(g, cs, path);
+        read_bodies(g, &cs->bodies, path);
         cs->forces_read = found[PF_FIELD_f] && found[PF_FIELD_torque];
         cs->coupling_read = found[PF_FIELD_beta] && found[PF_FIELD_f_fluid];
     }

@@ -13,6 +13,7 @@ void dem_restart_save_contacts(const dem_system *s, dem_contact_state *cs)
     dem_contacts_gather(s, &store);
     dem_contacts_to_state(&store, s->nwalls, cs);
     dem_contact_store_free(&store);
+    if (s->bodies.n) dem_bodies_to_state(s, &cs->bodies);
 }
 
 void dem_restart_setup(dem_system *s, const dem_contact_state *cs)
@@ -47,6 +48,11 @@ int dem_restart_read(dem_system *s, const char *base, double at_time, double tol
                       base, (long long)s->p.id[i], s->p.type[i], s->materials.ntypes);
         dem_particles_set_mass(&s->p, i, s->materials.mat[s->p.type[i]].density);
         if (s->p.id[i] >= s->next_id) s->next_id = s->p.id[i] + 1;
+    }
+    if (cs && cs->bodies.count > 0) {   /* multisphere bodies: their spheres take their mass */
+        char where[4200];
+        snprintf(where, sizeof where, "%s.h5", base);
+        dem_bodies_from_state(s, &cs->bodies, where);
     }
     return 0;
 }
