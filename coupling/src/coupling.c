@@ -140,11 +140,18 @@ static cpl_cell_weights weights_of(const coupling *c)
 
 /* Void fraction with the particles' current positions (each particle's last cell as the walk's
  * start). */
+static void particle_volumes(coupling *c)
+{
+    for (int i = 0; i < c->s.p.n; i++) c->volume[i] = dem_particle_volume(&c->s, i);
+}
+
 static void update_void_fraction(coupling *c)
 {
     dem_particles *p = &c->s.p;
     grow_particles(c, p->n);
-    const int outside = cpl_vf_compute(&c->vf, &c->mesh, p->n, (const double (*)[3])p->x, p->radius, p->fluid_cell);
+    particle_volumes(c);
+    const int outside = cpl_vf_compute_volumes(&c->vf, &c->mesh, p->n, (const double (*)[3])p->x, p->radius,
+                                               c->volume, p->fluid_cell);
     if (outside > 0 && outside != c->outside_reported) {
         dem_warning("coupling: %d particle(s) lie outside the fluid mesh at t = %g s; they feel no fluid "
                     "force and give none to the fluid", outside, c->s.time);
@@ -184,10 +191,8 @@ static void evaluate_forces(coupling *c, const double (*U)[3], const double (*gr
         for (int i = 0; i < p->n; i++)
             for (int q = 0; q < 3; q++) { c->u_p[i][q] = c->ugp_p[i][q]; c->gp_p[i][q] = c->ugp_p[i][3 + q]; }
     }
-    for (int i = 0; i < p->n; i++) {
-        c->d[i] = 2.0 * p->radius[i];
-        c->volume[i] = 4.0 / 3.0 * M_PI * p->radius[i] * p->radius[i] * p->radius[i];
-    }
+    for (int i = 0; i < p->n; i++) c->d[i] = 2.0 * p->radius[i];
+    particle_volumes(c);   /* a body's spheres share its volume (bodies.h) */
     const cpl_particle_fluid in = {p->n, (const double (*)[3])p->v, c->d, c->volume,
                                    (const double (*)[3])c->u_p, (const double (*)[3])c->gp_p, c->alpha_p, p->fluid_cell};
     cpl_fluid_forces_eval(&c->params, &in, &c->forces);

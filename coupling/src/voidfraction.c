@@ -156,6 +156,12 @@ static void weights_gaussian(cpl_voidfraction *vf, const cpl_mesh *m, const doub
 int cpl_vf_compute(cpl_voidfraction *vf, const cpl_mesh *m, int np, const double (*x)[3],
                    const double *r, int *cell)
 {
+    return cpl_vf_compute_volumes(vf, m, np, x, r, NULL, cell);
+}
+
+int cpl_vf_compute_volumes(cpl_voidfraction *vf, const cpl_mesh *m, int np, const double (*x)[3],
+                           const double *r, const double *volume, int *cell)
+{
     if (np < 0 || m->ncells != vf->ncells)
         dem_fatal("void fraction: %d particles, mesh of %d cells (set up for %d)", np, m->ncells, vf->ncells);
     for (int i = 0; i < np; i++)
@@ -184,7 +190,7 @@ int cpl_vf_compute(cpl_voidfraction *vf, const cpl_mesh *m, int np, const double
     vf->w_start[np] = nw;
     memset(vf->vp, 0, vf->ncells * sizeof(double));
     for (int i = 0; i < np; i++) {
-        const double vol = 4.0 / 3.0 * M_PI * r[i] * r[i] * r[i];
+        const double vol = volume ? volume[i] : 4.0 / 3.0 * M_PI * r[i] * r[i] * r[i];
         for (int k = vf->w_start[i]; k < vf->w_start[i + 1]; k++) vf->vp[vf->w_cell[k]] += vf->w[k] * vol;
     }
     for (int c = 0; c < vf->ncells; c++) vf->alpha[c] = fmax(vf->alpha_min, 1.0 - vf->vp[c] / m->cell_volume[c]);

@@ -72,6 +72,11 @@ void cpl_vf_set_samples(cpl_voidfraction *vf, int nshell, int nper);
  * (a radius not positive and finite, a mesh other than vf's) is a fatal error. */
 int cpl_vf_compute(cpl_voidfraction *vf, const cpl_mesh *m, int np, const double (*x)[3],
                    const double *r, int *cell);
+/* The same with each particle's volume given (volume[i] [m^3]; NULL: 4/3 pi r^3): the spheres of
+ * a multisphere body share its volume, overlaps counted once (bodies.h); r still sets where the
+ * volume goes (the divided and gaussian models). */
+int cpl_vf_compute_volumes(cpl_voidfraction *vf, const cpl_mesh *m, int np, const double (*x)[3],
+                           const double *r, const double *volume, int *cell);
 
 /* out[c][k] = sum over particles i of w_ic q[i][k] (q: [np][ncomp], out: [ncells][ncomp],
  * overwritten), with the weights of the last cpl_vf_compute. Sums, not densities: divide by the

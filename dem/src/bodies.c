@@ -40,6 +40,9 @@ int dem_bodies_add_template(dem_bodies *b, const char *name, int n, const double
     if (model == CLUMP_MASS_UNION) dem_clump_mass_union(n, x, radius, density, 1e-2, &t->mass);
     else dem_clump_mass_sphere_sum(n, x, radius, density, &t->mass);
     dem_quat_from_axes(t->mass.axes, t->q_axes);
+    double spheres = 0.0;
+    for (int i = 0; i < n; i++) spheres += 4.0 / 3.0 * M_PI * radius[i] * radius[i] * radius[i];
+    t->volume_scale = t->mass.volume / spheres;
     t->offset = dem_malloc((size_t)n * sizeof *t->offset);
     t->radius = dem_malloc((size_t)n * sizeof *t->radius);
     for (int i = 0; i < n; i++) {
@@ -281,4 +284,10 @@ void dem_bodies_from_state(dem_system *s, const dem_body_state *st, const char *
         p->inv_mass[i] = 1.0 / M;
         p->inv_inertia[i] = 1.0 / (0.4 * M * p->radius[i] * p->radius[i]);
     }
+}
+
+double dem_particle_volume(const dem_system *s, int i)
+{
+    const double r = s->p.radius[i], v = 4.0 / 3.0 * M_PI * r * r * r;
+    return s->p.body[i] ? v * template_of(&s->bodies, s->p.body[i] - 1)->volume_scale : v;
 }

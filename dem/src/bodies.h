@@ -33,6 +33,7 @@ typedef struct dem_clump_template {
     double *radius;             /* [m] */
     int type;                   /* material index */
     double q_axes[4];           /* principal frame to the template's own frame */
+    double volume_scale;        /* the body's volume / the sum of its spheres' (< 1 with overlaps, union) */
     dem_clump_mass mass;        /* mass, inertia, principal moments (template frame) */
 } dem_clump_template;
 
@@ -72,6 +73,9 @@ void dem_bodies_kick(struct dem_system *s);
  * the case's templates. */
 void dem_bodies_to_state(const struct dem_system *s, dem_body_state *state);
 void dem_bodies_from_state(struct dem_system *s, const dem_body_state *state, const char *where);
+/* Particle i's volume [m^3]: 4/3 pi r^3, for a body's sphere scaled so that the body's spheres
+ * sum to its volume (the coupling: void fraction, buoyancy, drag per unit volume). */
+double dem_particle_volume(const struct dem_system *s, int i);
 /* A body's angular velocity in space [rad/s] */
 void dem_body_omega(const dem_bodies *b, int k, double w[3]);
 /* Translational + rotational kinetic energy of all bodies [J] (eq. 8 with the principal tensor) */

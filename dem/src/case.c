@@ -433,17 +433,7 @@ static void read_multisphere(const dem_dict *root, dem_system *s)
                     dem_dict_fatal(e, "centres", "centre %d lies %g m from the template's origin: allowed 10 m", k + 1,
                                    c[3 * k + q]);
         }
-        /* the spheres must make one body: each one touches or overlaps another */
-        for (int k = 0; k < n && n > 1; k++) {
-            int joined = 0;
-            for (int m = 0; m < n && !joined; m++) {
-                if (m == k) continue;
-                const double dx = c[3 * k] - c[3 * m], dy = c[3 * k + 1] - c[3 * m + 1], dz = c[3 * k + 2] - c[3 * m + 2];
-                joined = sqrt(dx * dx + dy * dy + dz * dz) <= r[k] + r[m];
-            }
-            if (!joined)
-                dem_dict_fatal(e, "centres", "sphere %d touches no other sphere of '%s': a template is one body", k + 1, name);
-        }
+        /* spheres apart are allowed: the body holds them as a massless rigid frame would */
         const int model = dem_dict_choice_opt(e, "massModel", models, CLUMP_MASS_UNION);
         dem_bodies_add_template(&s->bodies, name, n, (const double (*)[3])c, r, material,
                                 s->materials.mat[material].density, (enum dem_clump_mass_model)model);

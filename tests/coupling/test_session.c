@@ -11,7 +11,9 @@
  *    centre void fraction's gas does), the force the particle feels over a fluid step equals
  *    what the fluid received for that step (K_sl (up - U) + S with the U it then solved), summed
  *    over 1000 steps, within 1e-4: the particle keeps the drag coefficient the fluid received.
- *    (Evaluating it again with the new slip made the particle feel 3.0 % more here.) */
+ *    (Evaluating it again with the new slip made the particle feel 3.0 % more here.)
+ *  - A multisphere body of two such spheres 10 diameters apart settles at the single sphere's
+ *    terminal velocity (1 %); the fluid receives its weight (1e-3). */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -20,6 +22,9 @@
 
 #include "coupling.h"
 #include "harness.h"
+
+/* body: the particle is a multisphere body of two such spheres 1 mm apart (10 diameters) */
+static int with_body;
 
 static void write_case(const char *dir, const char *model, const char *interp)
 {
@@ -34,8 +39,12 @@ static void write_case(const char *dir, const char *model, const char *interp)
                "materials { s { youngsModulus 1e6; poissonsRatio 0.3; density 3000; } }\n"
                "contactModels { normal hertz; tangential history; }\n"
                "interactions { default { restitution 0.5; friction 0.5; } }\n"
-               "insertion { one { region { type box; min (-1e-4 -1e-4 0.0899); max (1e-4 1e-4 0.0901); }\n"
-               "  number 1; material s; diameter { distribution constant; value 1e-4; } } }\n");
+               "%s", with_body
+               ? "multisphere { pair { material s; centres ((0 0 0) (1e-3 0 0)); radii (5e-5 5e-5); massModel sphereSum; } }\n"
+                 "insertion { one { region { type box; min (-7e-4 -7e-4 0.0893); max (7e-4 7e-4 0.0907); }\n"
+                 "  number 1; body pair; } }\n"
+               : "insertion { one { region { type box; min (-1e-4 -1e-4 0.0899); max (1e-4 1e-4 0.0901); }\n"
+                 "  number 1; material s; diameter { distribution constant; value 1e-4; } } }\n");
     fclose(f);
     snprintf(path, sizeof path, "%s/constant/couplingProperties", dir);
     f = fopen(path, "w");
@@ -113,6 +122,30 @@ static void settle(const char *model, const char *interp)
     session_close(&t);
 }
 
+/* A body of two spheres 1 mm apart (seed 004's multisphere, sphereSum): each sphere feels the
+ * drag and buoyancy of its own cell, the body sums them, so it settles at the single sphere's
+ * terminal velocity (1 %), and the fluid receives the body's whole weight (model B, 1e-3). */
+static void settle_body(void)
+{
+    with_body = 1;
+    session t;
+    session_open(&t, "body", "B", "cell");
+    double fluid_z = 0.0;
+    for (int step = 0; step < 1500; step++) {
+        coupling_evolve(t.c, (const double (*)[3])t.U, (const double (*)[3])t.gp);
+        fluid_z = received_z(&t);
+    }
+    double v[3], x[3];
+    coupling_particle_means(t.c, v, x);   /* the mean over the two spheres */
+    check_true("body of two spheres: two particles", coupling_particle_count(t.c) == 2);
+    check_rel("body of two spheres 10 d apart: terminal velocity vs the single sphere's (Schiller-Naumann)", -v[2],
+              0.1373, 0.01);
+    const double vol = M_PI / 6.0 * 1e-12, mass = 2 * 3000.0 * vol;
+    check_rel("body of two spheres: force on the fluid at terminal velocity = its weight [N]", fluid_z, -mass * G, 1e-3);
+    session_close(&t);
+    with_body = 0;
+}
+
 static void jitter(void)
 {
     session t;
@@ -139,5 +172,6 @@ int main(void)
     settle("A", "cell");
     settle("B", "cellPoint");   /* grad p interpolated: uniform here, so the same result */
     settle("B", "cellLinear");
+    settle_body();
     return finish("test_session");
 }
