@@ -140,7 +140,7 @@ void dem_neighbour_rebuild(dem_system *s)
             dem_fatal("periodic direction %c: the domain length %g m must be at least 3 x "
                       "(largest diameter + skin) = %g m", "xyz"[d],
                       s->domain_max[d] - s->domain_min[d], 3.0 * cutoff);
-    if (nl->sort_interval > 0 && nl->builds % nl->sort_interval == 0) {
+    if (nl->sort_interval > 0 && nl->schedule % nl->sort_interval == 0) {
         bin_particles(s, p->n, cutoff);
         sort_by_cell(s);
         nl->sorts++;
@@ -207,4 +207,5 @@ void dem_neighbour_rebuild(dem_system *s)
     }
     memcpy(nl->x_at_build, p->x, (size_t)p->n * sizeof(dem_vec3));
     nl->builds++;
+    nl->schedule++;
 }

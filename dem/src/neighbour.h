@@ -25,7 +25,8 @@ typedef struct dem_neighbour_list {
     int rows;                    /* particles the list was built for */
     dem_vec3 *x_at_build;            /* positions at the last build */
     int build_capacity;
-    long builds, sorts;
+    long builds, sorts;              /* since the start of the run */
+    long schedule;                   /* builds since the sorting schedule began (a relist begins it again) */
     /* cells */
     int ncell[3];
     double cell_size[3], origin[3];

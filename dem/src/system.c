@@ -125,7 +125,7 @@ long dem_system_setup_with_contacts(dem_system *s, const dem_contact_store *save
 
 void dem_system_relist(dem_system *s)
 {
-    s->nlist.builds = 0;   /* as in a fresh system: the first build sorts */
+    s->nlist.schedule = 0;   /* as in a fresh system: the first build sorts */
     dem_walls_move(s, s->time);
     remake_lists(s);
 }

@@ -159,7 +159,7 @@ static void history_survives(int flip)
     int row_id[2] = {-1, -1};
     for (int pass = 0; pass < 2; pass++) {
         if (pass == 1) {   /* force a rebuild with sorting: pretend everything moved since the build */
-            s.nlist.builds = 0;
+            s.nlist.schedule = 0;
             s.nlist.sort_interval = 1;
             /* (0.6 skin: past the half skin that triggers a build, short of the check that a
              * particle did not jump half its radius in one step) */
