@@ -24,6 +24,8 @@ void dem_bodies_free(dem_bodies *b)
     free(b->Lb);
     free(b->f);
     free(b->torque);
+    free(b->R);
+    free(b->w);
     memset(b, 0, sizeof *b);
 }
 
@@ -57,11 +59,43 @@ int dem_bodies_add_template(dem_bodies *b, const char *name, int n, const double
 
 static const dem_clump_template *template_of(const dem_bodies *b, int k) { return &b->templates[b->template_of[k]]; }
 
-void dem_body_omega(const dem_bodies *b, int k, double w[3])
+static int append_body(dem_bodies *b)
+{
+    if (b->n == b->capacity) {
+        b->capacity = b->capacity ? 2 * b->capacity : 64;
+        const size_t c = (size_t)b->capacity;
+        b->template_of = dem_realloc(b->template_of, c * sizeof *b->template_of);
+        b->id = dem_realloc(b->id, c * sizeof *b->id);
+        b->x = dem_realloc(b->x, c * sizeof *b->x);
+        b->v = dem_realloc(b->v, c * sizeof *b->v);
+        b->q = dem_realloc(b->q, c * sizeof *b->q);
+        b->Lb = dem_realloc(b->Lb, c * sizeof *b->Lb);
+        b->f = dem_realloc(b->f, c * sizeof *b->f);
+        b->torque = dem_realloc(b->torque, c * sizeof *b->torque);
+        b->R = dem_realloc(b->R, c * sizeof *b->R);
+        b->w = dem_realloc(b->w, c * sizeof *b->w);
+    }
+    return b->n++;
+}
+
+/* omega = R (L_b / I), with the kept R */
+static void update_omega(dem_bodies *b, int k)
 {
     const double *I = template_of(b, k)->mass.principal;
     const double wb[3] = {b->Lb[k][0] / I[0], b->Lb[k][1] / I[1], b->Lb[k][2] / I[2]};
-    dem_quat_rotate(b->q[k], wb, w);
+    for (int d = 0; d < 3; d++) b->w[k][d] = b->R[k][d][0] * wb[0] + b->R[k][d][1] * wb[1] + b->R[k][d][2] * wb[2];
+}
+
+/* R and omega after q or L_b changed */
+static void update_frame(dem_bodies *b, int k)
+{
+    dem_quat_matrix(b->q[k], b->R[k]);
+    update_omega(b, k);
+}
+
+void dem_body_omega(const dem_bodies *b, int k, double w[3])
+{
+    for (int d = 0; d < 3; d++) w[d] = b->w[k][d];
 }
 
 /* The spheres of every body where their body is (positions only with `positions`), moving with it. */
@@ -69,12 +103,8 @@ static void place_spheres(dem_system *s, int positions)
 {
     dem_bodies *b = &s->bodies;
     dem_particles *p = &s->p;
-    double (*R)[3][3] = dem_malloc((size_t)b->n * sizeof *R);
-    dem_vec3 *w = dem_malloc((size_t)b->n * sizeof *w);
-    for (int k = 0; k < b->n; k++) {
-        dem_quat_matrix(b->q[k], R[k]);
-        dem_body_omega(b, k, w[k]);
-    }
+    const double (*R)[3][3] = (const double (*)[3][3])b->R;
+    const dem_vec3 *w = b->w;
     for (int i = 0; i < p->n; i++) {
         if (!p->body[i]) continue;
         const int k = p->body[i] - 1;
@@ -89,8 +119,6 @@ static void place_spheres(dem_system *s, int positions)
             p->omega[i][d] = wk[d];
         }
     }
-    free(R);
-    free(w);
 }
 
 int dem_bodies_add(dem_system *s, int t, const double x[3], const double q_frame[4], const double v[3],
@@ -98,18 +126,7 @@ int dem_bodies_add(dem_system *s, int t, const double x[3], const double q_frame
 {
     dem_bodies *b = &s->bodies;
     if (t < 0 || t >= b->ntemplates) dem_fatal("multisphere body: no template %d", t);
-    if (b->n == b->capacity) {
-        b->capacity = b->capacity ? 2 * b->capacity : 64;
-        b->template_of = dem_realloc(b->template_of, (size_t)b->capacity * sizeof *b->template_of);
-        b->id = dem_realloc(b->id, (size_t)b->capacity * sizeof *b->id);
-        b->x = dem_realloc(b->x, (size_t)b->capacity * sizeof *b->x);
-        b->v = dem_realloc(b->v, (size_t)b->capacity * sizeof *b->v);
-        b->q = dem_realloc(b->q, (size_t)b->capacity * sizeof *b->q);
-        b->Lb = dem_realloc(b->Lb, (size_t)b->capacity * sizeof *b->Lb);
-        b->f = dem_realloc(b->f, (size_t)b->capacity * sizeof *b->f);
-        b->torque = dem_realloc(b->torque, (size_t)b->capacity * sizeof *b->torque);
-    }
-    const int k = b->n++;
+    const int k = append_body(b);
     const dem_clump_template *tp = &b->templates[t];
     b->template_of[k] = t;
     b->id[k] = k;
@@ -122,6 +139,7 @@ int dem_bodies_add(dem_system *s, int t, const double x[3], const double q_frame
         b->Lb[k][d] = tp->mass.principal[d] * wb[d];
         b->f[k][d] = b->torque[k][d] = 0.0;
     }
+    update_frame(b, k);
     const double M = tp->mass.mass;
     for (int i = 0; i < tp->n; i++) {
         const double zero[3] = {0.0, 0.0, 0.0};
@@ -160,12 +178,17 @@ void dem_bodies_sum_forces(dem_system *s)
     }
 }
 
+/* V += h F / M; L_b += h R^T T (the kept R: q does not change in a kick) */
 static void half_kick(dem_bodies *b, double h)
 {
     for (int k = 0; k < b->n; k++) {
         const double inv_m = 1.0 / template_of(b, k)->mass.mass;
-        for (int d = 0; d < 3; d++) b->v[k][d] += h * inv_m * b->f[k][d];
-        dem_rigid_kick(b->q[k], b->Lb[k], b->torque[k], h);
+        const double (*R)[3] = b->R[k], *T = b->torque[k];
+        for (int d = 0; d < 3; d++) {
+            b->v[k][d] += h * inv_m * b->f[k][d];
+            b->Lb[k][d] += h * (R[0][d] * T[0] + R[1][d] * T[1] + R[2][d] * T[2]);
+        }
+        update_omega(b, k);
     }
 }
 
@@ -176,6 +199,7 @@ void dem_bodies_kick_drift(dem_system *s)
     for (int k = 0; k < b->n; k++) {
         for (int d = 0; d < 3; d++) b->x[k][d] += s->dt * b->v[k][d];
         dem_rigid_free_rotation(template_of(b, k)->mass.principal, b->q[k], b->Lb[k], s->dt);
+        update_frame(b, k);
     }
     place_spheres(s, 1);
 }
@@ -249,19 +273,7 @@ void dem_bodies_from_state(dem_system *s, const dem_body_state *st, const char *
         if (t < 0 || t >= b->ntemplates)
             dem_fatal("%s: body %ld has template %lld, but the case defines %d multisphere templates", where, k,
                       (long long)t, b->ntemplates);
-        /* grown as dem_bodies_add grows it; no spheres added: they are in the snapshot */
-        if (b->n == b->capacity) {
-            b->capacity = b->capacity ? 2 * b->capacity : 64;
-            b->template_of = dem_realloc(b->template_of, (size_t)b->capacity * sizeof *b->template_of);
-            b->id = dem_realloc(b->id, (size_t)b->capacity * sizeof *b->id);
-            b->x = dem_realloc(b->x, (size_t)b->capacity * sizeof *b->x);
-            b->v = dem_realloc(b->v, (size_t)b->capacity * sizeof *b->v);
-            b->q = dem_realloc(b->q, (size_t)b->capacity * sizeof *b->q);
-            b->Lb = dem_realloc(b->Lb, (size_t)b->capacity * sizeof *b->Lb);
-            b->f = dem_realloc(b->f, (size_t)b->capacity * sizeof *b->f);
-            b->torque = dem_realloc(b->torque, (size_t)b->capacity * sizeof *b->torque);
-        }
-        const int j = b->n++;
+        const int j = append_body(b);   /* no spheres added: they are in the snapshot */
         b->template_of[j] = (int)t;
         b->id[j] = st->id[k];
         for (int d = 0; d < 3; d++) {
@@ -272,6 +284,7 @@ void dem_bodies_from_state(dem_system *s, const dem_body_state *st, const char *
             b->torque[j][d] = st->torque[3 * k + d];
         }
         for (int d = 0; d < 4; d++) b->q[j][d] = st->q[4 * k + d];
+        update_frame(b, j);
     }
     dem_particles *p = &s->p;
     for (int i = 0; i < p->n; i++) {

@@ -47,6 +47,8 @@ typedef struct dem_bodies {
     double (*q)[4];             /* orientation: principal frame to space */
     dem_vec3 *Lb;               /* angular momentum, principal frame [kg m^2/s] */
     dem_vec3 *f, *torque;       /* total force [N] and torque about the centre [N m] of the step */
+    double (*R)[3][3];          /* R(q), kept with q: the rotation of the body frame into space */
+    dem_vec3 *w;                /* angular velocity in space [rad/s], kept with L_b */
 } dem_bodies;
 
 struct dem_system;

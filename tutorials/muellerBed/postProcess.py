@@ -122,7 +122,8 @@ def main():
             c = compare(y, a, exp)
             print(f"INFO {name} z = {z:g} mm: mean {c['mean'][0]:.3f} (MR {c['mean'][1]:.3f}), core {c['core'][0]:.3f} "
                   f"(MR {c['core'][1]:.3f}), walls {c['wall'][0]:.3f} (MR {c['wall'][1]:.3f}), RMS difference {c['rms']:.3f}")
-            checks.at_most(f"{name}_z{z:g}_rms", c["rms"], TOL_RMS)
+            if not name.endswith("_clumps"):   # the measurement is of the seeds, not of dumbbells
+                checks.at_most(f"{name}_z{z:g}_rms", c["rms"], TOL_RMS)
     draw(results)
     return 1 if checks.failed else 0
 
