@@ -486,9 +486,14 @@ static void run_insertions(const dem_dict *root, dem_system *s, int insert, cons
             const int n = f[0] == '/' ? snprintf(ins.file, sizeof ins.file, "%s", f)
                                       : snprintf(ins.file, sizeof ins.file, "%s/%s", constant_dir, f);
             if (n >= (int)sizeof ins.file) dem_dict_fatal(e, "file", "the path is too long");
-            ins.material = dem_dict_has(e, "material") ? particle_material_of(e, &s->materials) : -1;
-            ins.has_diameter = dem_dict_has(e, "diameter");
-            if (ins.has_diameter) read_diameter(e, &ins);
+            if (dem_dict_has(e, "body")) {   /* the file's points are multisphere bodies' centres */
+                ins.body = 1 + template_of(e, s);
+                ins.material = s->bodies.templates[ins.body - 1].type;
+            } else {
+                ins.material = dem_dict_has(e, "material") ? particle_material_of(e, &s->materials) : -1;
+                ins.has_diameter = dem_dict_has(e, "diameter");
+                if (ins.has_diameter) read_diameter(e, &ins);
+            }
         } else {
             read_region(e, &ins);
             if (ins.method == INSERT_RANDOM && dem_dict_has(e, "body")) {   /* multisphere bodies */
@@ -538,7 +543,10 @@ static void run_insertions(const dem_dict *root, dem_system *s, int insert, cons
                 dem_info("insertion '%s': %ld particles (lattice)", name, dem_insertion_lattice(s, &ins, e));
                 break;
             case INSERT_FILE:
-                dem_info("insertion '%s': %ld particles (from %s)", name, dem_insertion_file(s, &ins, e), ins.file);
+                if (ins.body)
+                    dem_info("insertion '%s': %ld multisphere bodies '%s' (from %s)", name, dem_insertion_file(s, &ins, e),
+                             s->bodies.templates[ins.body - 1].name, ins.file);
+                else dem_info("insertion '%s': %ld particles (from %s)", name, dem_insertion_file(s, &ins, e), ins.file);
                 break;
             }
         }

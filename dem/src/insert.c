@@ -430,3 +430,45 @@ long dem_insertion_add_batch(dem_system *s, const dem_insertion *ins, const dem_
     free(g.next);
     return b->n;
 }
+
+long dem_insertion_add_body_batch(dem_system *s, const dem_insertion *ins, const dem_insert_batch *b, const char *file)
+{
+    dem_particles *p = &s->p;
+    const dem_clump_template *t = &s->bodies.templates[ins->body - 1];
+    double dmax = 0.0;
+    for (int k = 0; k < t->n; k++) dmax = fmax(dmax, 2.0 * t->radius[k]);
+    for (int i = 0; i < p->n; i++) dmax = fmax(dmax, 2.0 * p->radius[i]);
+    long capacity = p->n + (b->n + 1) * t->n;
+    grid g;
+    grid_init(&g, s, dmax, capacity, capacity);
+    for (int i = 0; i < p->n; i++) grid_add(&g, p, i);
+    dem_rng r;
+    rng_seed(&r, ins->seed);
+    double (*centre)[3] = dem_malloc((size_t)t->n * sizeof *centre);
+    for (long i = 0; i < b->n; i++) {
+        char where[4200];
+        snprintf(where, sizeof where, "%s:%d", file, b->line[i]);
+        double q[4], qb[4];
+        draw_orientation(&r, q);
+        dem_quat_multiply(q, t->q_axes, qb);
+        for (int k = 0; k < t->n; k++) {
+            dem_quat_rotate(qb, t->offset[k], centre[k]);
+            for (int d = 0; d < 3; d++) centre[k][d] += b->x[i][d];
+            for (int d = 0; d < 3; d++)
+                if (!(centre[k][d] - t->radius[k] >= s->domain_min[d] && centre[k][d] + t->radius[k] <= s->domain_max[d]))
+                    dem_fatal_at(where, "body '%s' at (%g %g %g) m: its sphere %d leaves the domain", t->name,
+                                 b->x[i][0], b->x[i][1], b->x[i][2], k + 1);
+            if (overlaps(s, &g, centre[k], t->radius[k]))
+                dem_fatal_at(where, "body '%s' at (%g %g %g) m (at its random orientation, seed %llu): its sphere %d "
+                             "overlaps a wall, a mirror or a particle placed before", t->name, b->x[i][0], b->x[i][1],
+                             b->x[i][2], (unsigned long long)ins->seed, k + 1);
+        }
+        const double w[3] = {0.0, 0.0, 0.0};
+        dem_bodies_add(s, ins->body - 1, b->x[i], q, b->v[i], w);
+        for (int j = p->n - t->n; j < p->n; j++) grid_add(&g, p, j);
+    }
+    free(centre);
+    free(g.head);
+    free(g.next);
+    return b->n;
+}

@@ -77,6 +77,11 @@ long dem_insertion_lattice(struct dem_system *s, const dem_insertion *ins, const
 /* Read a positions file into b (formats in insert_file.c); fatal with "<file>:<line>: ..." on
  * any error. Columns missing from a line take the insertion's diameter, velocity, material. */
 void dem_insert_file_read(const struct dem_system *s, const dem_insertion *ins, dem_insert_batch *b);
+/* Multisphere bodies of template ins->body - 1 at the batch's points (centres of mass), each at a
+ * random orientation (ins->seed), checked as dem_insertion_add_batch checks spheres: fatal naming
+ * the file line of a body whose sphere leaves the domain or overlaps a wall or a particle. */
+long dem_insertion_add_body_batch(struct dem_system *s, const dem_insertion *ins, const dem_insert_batch *b,
+                                  const char *file);
 /* File insertion: read, check and place. */
 long dem_insertion_file(struct dem_system *s, const dem_insertion *ins, const struct dem_dict *entry);
 

@@ -9,6 +9,8 @@
  *                FoamFile { } header, an optional count, then `(` , one `(x y z)` per position,
  *                `)`; `//` and block comments. ASCII only.
  *
+ * With `body <template>` each line (or position) is a multisphere body's centre of mass, 3
+ * columns, turned to a random orientation drawn with `seed`, at the entry's velocity.
  * A column a line does not give is taken from the insertion entry: diameter from `diameter`
  * (drawn from its distribution with `seed`), velocity from `velocity` (default 0), material
  * from `material`. Every error names the file and line ("positions.dat:17: ..."). A gzipped
@@ -98,6 +100,10 @@ static double number_or_fatal(const reader *rd, int line, const char *text, size
 static void push(reader *rd, int line, const double x[3], const double *v, double d, int material)
 {
     const dem_insertion *ins = rd->ins;
+    if (ins->body) {   /* a body's centre of mass: its template gives the rest */
+        dem_insert_batch_push(rd->b, x, ins->velocity, 0.0, ins->material, line);
+        return;
+    }
     if (isnan(d)) {
         if (!ins->has_diameter)
             file_fatal(rd, line, "no diameter column, and insertion '%s' has no 'diameter' entry: give one of "
@@ -142,6 +148,9 @@ static void read_columns(reader *rd)
         }
         pos = end + 1;
         if (ncol == 0) continue;
+        if (rd->ins->body && ncol != 3)
+            file_fatal(rd, line, "insertion '%s' places multisphere bodies: 3 columns (x y z, the centre of mass), "
+                       "got %d", rd->ins->name, ncol);
         if (ncol != 3 && ncol != 4 && ncol != 7 && ncol != 8)
             file_fatal(rd, line, "expected 3, 4, 7 or 8 columns (x y z [d [vx vy vz [material]]]), got %d", ncol);
         static const char *const names[] = {"column 1 (x)", "column 2 (y)", "column 3 (z)", "column 4 (diameter)",
@@ -350,7 +359,8 @@ long dem_insertion_file(dem_system *s, const dem_insertion *ins, const dem_dict 
     dem_insert_batch b;
     dem_insert_batch_init(&b);
     dem_insert_file_read(s, ins, &b);
-    const long placed = dem_insertion_add_batch(s, ins, &b, ins->file, entry, "file");
+    const long placed = ins->body ? dem_insertion_add_body_batch(s, ins, &b, ins->file)
+                                  : dem_insertion_add_batch(s, ins, &b, ins->file, entry, "file");
     dem_insert_batch_free(&b);
     return placed;
 }

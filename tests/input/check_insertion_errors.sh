@@ -11,6 +11,8 @@ passed=0 failed=0
 # the lattice entry turned into a file entry (lines 20-23 of base_insertion.demProperties)
 FILE='20s/method   lattice;/method   file; file "positions.dat";/;21,23d'
 SYM='s/point (-0.01 0 0); normal (1 0 0)/point (-0.0085 0 0); normal (1 0 0)/'
+# the lattice entry turned into a file of multisphere bodies' centres (a two-sphere template)
+BODYFILE='20s/method   lattice;/method   file; file "positions.dat"; body pair;/;21,25d;s/^walls$/multisphere { pair { material glass; centres ((0 0 0) (2e-3 0 0)); radii (1e-3 1e-3); } }\nwalls/'
 
 # name | sed expression on base_insertion.demProperties | constant/positions.dat (printf %b;
 # empty: none) | shell command run in constant/ afterwards | text the error must contain (grep -E)
@@ -37,6 +39,8 @@ cases=(
   "file_not_a_number|$FILE|0 0 0.005\n0 abc 0.005\n||positions.dat:2: error: column 2 \(y\): 'abc' is not a number"
   "file_bad_diameter|$FILE|0 0 0.005 -0.002\n||positions.dat:1: error: column 4: the diameter -0.002 m is out of range"
   "file_overlap|$FILE|# x y z\n0 0 0.005\n0 0.005 0.005   // fine\n\n0 0.001 0.005\n||positions.dat:5: error: .*overlaps the particle of line 2"
+  "body_file_columns|$BODYFILE|0 0 0.005 0.002\n||positions.dat:1: error: insertion 'bed' places multisphere bodies: 3 columns"
+  "body_file_overlap|$BODYFILE|0 0 0.005\n0 0.0005 0.005\n||positions.dat:2: error: body 'pair' at .*its sphere [12] overlaps"
   "file_outside|$FILE|0 0 0.005\n0 0 0.05\n||positions.dat:2: error: .*outside the domain"
   "file_overlaps_wall|$FILE|0 0 0.0005\n||positions.dat:1: error: .*overlaps wall 'floor'"
   "file_beyond_symmetry|$FILE;$SYM|-0.009 0 0.005\n||positions.dat:1: error: .*beyond symmetryPlane 'front'"
