@@ -42,6 +42,7 @@ int dem_bodies_add_template(dem_bodies *b, const char *name, int n, const double
     if (model == CLUMP_MASS_UNION) dem_clump_mass_union(n, x, radius, density, 1e-2, &t->mass);
     else dem_clump_mass_sphere_sum(n, x, radius, density, &t->mass);
     dem_quat_from_axes(t->mass.axes, t->q_axes);
+    for (int d = 0; d < 3; d++) t->inv_principal[d] = 1.0 / t->mass.principal[d];
     double spheres = 0.0;
     for (int i = 0; i < n; i++) spheres += 4.0 / 3.0 * M_PI * radius[i] * radius[i] * radius[i];
     t->volume_scale = t->mass.volume / spheres;
@@ -81,8 +82,8 @@ static int append_body(dem_bodies *b)
 /* omega = R (L_b / I), with the kept R */
 static void update_omega(dem_bodies *b, int k)
 {
-    const double *I = template_of(b, k)->mass.principal;
-    const double wb[3] = {b->Lb[k][0] / I[0], b->Lb[k][1] / I[1], b->Lb[k][2] / I[2]};
+    const double *inv_I = template_of(b, k)->inv_principal;
+    const double wb[3] = {b->Lb[k][0] * inv_I[0], b->Lb[k][1] * inv_I[1], b->Lb[k][2] * inv_I[2]};
     for (int d = 0; d < 3; d++) b->w[k][d] = b->R[k][d][0] * wb[0] + b->R[k][d][1] * wb[1] + b->R[k][d][2] * wb[2];
 }
 

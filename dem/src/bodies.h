@@ -34,6 +34,7 @@ typedef struct dem_clump_template {
     int type;                   /* material index */
     double q_axes[4];           /* principal frame to the template's own frame */
     double volume_scale;        /* the body's volume / the sum of its spheres' (< 1 with overlaps, union) */
+    double inv_principal[3];    /* 1 / the principal moments [1/(kg m^2)] */
     dem_clump_mass mass;        /* mass, inertia, principal moments (template frame) */
 } dem_clump_template;
 

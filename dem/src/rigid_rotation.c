@@ -75,10 +75,10 @@ void dem_quat_from_axes(const double axes[3][3], double q[4])
  * costs a few multiplications; otherwise the library's. */
 static void sin_cos(double x, double *s, double *c)
 {
-    if (fabs(x) < 0.05) {
+    if (fabs(x) < 0.05) {   /* multiplications by the reciprocals: no division in this path */
         const double x2 = x * x;
-        *s = x * (1.0 - x2 / 6.0 * (1.0 - x2 / 20.0 * (1.0 - x2 / 42.0 * (1.0 - x2 / 72.0))));
-        *c = 1.0 - x2 / 2.0 * (1.0 - x2 / 12.0 * (1.0 - x2 / 30.0 * (1.0 - x2 / 56.0)));
+        *s = x * (1.0 - x2 * (1.0 / 6.0) * (1.0 - x2 * (1.0 / 20.0) * (1.0 - x2 * (1.0 / 42.0) * (1.0 - x2 * (1.0 / 72.0)))));
+        *c = 1.0 - x2 * 0.5 * (1.0 - x2 * (1.0 / 12.0) * (1.0 - x2 * (1.0 / 30.0) * (1.0 - x2 * (1.0 / 56.0))));
         return;
     }
     *s = sin(x);
@@ -86,9 +86,9 @@ static void sin_cos(double x, double *s, double *c)
 }
 
 /* The body turned by tau L_k / I_k about its axis k; L_b, fixed in space, turns back. */
-static void rotate_about_axis(int k, const double I[3], double q[4], double Lb[3], double tau)
+static void rotate_about_axis(int k, const double inv_I[3], double q[4], double Lb[3], double tau)
 {
-    const double phi = tau * Lb[k] / I[k];
+    const double phi = tau * Lb[k] * inv_I[k];
     double sh, ch;
     sin_cos(0.5 * phi, &sh, &ch);
     const double c = ch * ch - sh * sh, s = 2.0 * sh * ch;   /* of phi, from the half angle */
@@ -108,13 +108,14 @@ static void rotate_about_axis(int k, const double I[3], double q[4], double Lb[3
 
 void dem_rigid_free_rotation(const double I[3], double q[4], double Lb[3], double h)
 {
-    rotate_about_axis(0, I, q, Lb, 0.5 * h);
-    rotate_about_axis(1, I, q, Lb, 0.5 * h);
-    rotate_about_axis(2, I, q, Lb, h);
-    rotate_about_axis(1, I, q, Lb, 0.5 * h);
-    rotate_about_axis(0, I, q, Lb, 0.5 * h);
-    const double norm = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
-    for (int k = 0; k < 4; k++) q[k] /= norm;
+    const double inv_I[3] = {1.0 / I[0], 1.0 / I[1], 1.0 / I[2]};
+    rotate_about_axis(0, inv_I, q, Lb, 0.5 * h);
+    rotate_about_axis(1, inv_I, q, Lb, 0.5 * h);
+    rotate_about_axis(2, inv_I, q, Lb, h);
+    rotate_about_axis(1, inv_I, q, Lb, 0.5 * h);
+    rotate_about_axis(0, inv_I, q, Lb, 0.5 * h);
+    const double inv_norm = 1.0 / sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+    for (int k = 0; k < 4; k++) q[k] *= inv_norm;
 }
 
 void dem_rigid_kick(const double q[4], double Lb[3], const double T[3], double h)
