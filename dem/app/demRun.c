@@ -144,18 +144,9 @@ int main(int argc, char **argv)
            s.time, total_steps, secs, secs > 0 ? (double)total_steps * s.p.n / secs : 0.0,
            s.nlist.builds, s.nlist.sorts, dem_system_kinetic_energy(&s));
     printf("neighbour list: %.2f pairs per particle (skin %g m)\n", s.p.n ? (double)s.nlist.npairs / s.p.n : 0.0, s.nlist.skin);
-    if (s.bodies.n) {   /* seed 004 eq. 8-10 per body, summed; each body's is in the snapshots */
-        dem_body_state st;
-        dem_bodies_to_state(&s, &st);
-        double e_rot = 0.0;
-        for (long k = 0; k < st.count; k++) e_rot += st.e_rot[k];
+    if (s.bodies.n)   /* each body's is in the snapshots */
         printf("multisphere: %d bodies, rotational kinetic energy %.6g J (seed 004 eq. 8, summed over the bodies)\n",
-               s.bodies.n, e_rot);
-        dem_contact_state holder;
-        memset(&holder, 0, sizeof holder);
-        holder.bodies = st;
-        dem_contact_state_free(&holder);
-    }
+               s.bodies.n, dem_bodies_rotational_energy(&s));
     dem_system_free(&s);
     return 0;
 }

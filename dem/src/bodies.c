@@ -122,6 +122,25 @@ static void place_spheres(dem_system *s, int positions)
     }
 }
 
+/* A body's sphere carries the body's mass: m* of its contacts and the time-step check see the body */
+static void give_body_mass(dem_particles *p, int i, double M)
+{
+    p->mass[i] = M;
+    p->inv_mass[i] = 1.0 / M;
+    p->inv_inertia[i] = 1.0 / (0.4 * M * p->radius[i] * p->radius[i]);
+}
+
+void dem_body_sphere_centres(const dem_clump_template *t, const double x[3], const double q_frame[4],
+                             double (*centre)[3])
+{
+    double q[4];
+    dem_quat_multiply(q_frame, t->q_axes, q);   /* principal -> template frame -> space */
+    for (int k = 0; k < t->n; k++) {
+        dem_quat_rotate(q, t->offset[k], centre[k]);
+        for (int d = 0; d < 3; d++) centre[k][d] += x[d];
+    }
+}
+
 int dem_bodies_add(dem_system *s, int t, const double x[3], const double q_frame[4], const double v[3],
                    const double w[3])
 {
@@ -147,10 +166,7 @@ int dem_bodies_add(dem_system *s, int t, const double x[3], const double q_frame
         const int j = dem_particles_add(&s->p, zero, zero, tp->radius[i], 1.0, tp->type, s->next_id++);
         s->p.body[j] = k + 1;
         for (int d = 0; d < 3; d++) s->p.body_offset[j][d] = tp->offset[i][d];
-        /* the body's mass: m* of its contacts and the time-step check see the body */
-        s->p.mass[j] = M;
-        s->p.inv_mass[j] = 1.0 / M;
-        s->p.inv_inertia[j] = 1.0 / (0.4 * M * tp->radius[i] * tp->radius[i]);
+        give_body_mass(&s->p, j, M);
     }
     place_spheres(s, 1);
     return k;
@@ -211,24 +227,29 @@ void dem_bodies_kick(dem_system *s)
     place_spheres(s, 0);
 }
 
-double dem_bodies_kinetic_energy(const dem_system *s)
-{
-    const dem_bodies *b = &s->bodies;
-    double e = 0.0;
-    for (int k = 0; k < b->n; k++) {
-        const dem_clump_mass *m = &template_of(b, k)->mass;
-        const double *v = b->v[k], *L = b->Lb[k], *I = m->principal;
-        e += 0.5 * m->mass * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-        e += 0.5 * (L[0] * L[0] / I[0] + L[1] * L[1] / I[1] + L[2] * L[2] / I[2]);   /* eq. 8, principal frame */
-    }
-    return e;
-}
-
 /* The rotational energy of body k: 1/2 sum L_b^2 / I over the principal axes (seed 004 eq. 8) */
 static double rotational_energy(const dem_bodies *b, int k)
 {
     const double *L = b->Lb[k], *I = template_of(b, k)->mass.principal;
     return 0.5 * (L[0] * L[0] / I[0] + L[1] * L[1] / I[1] + L[2] * L[2] / I[2]);
+}
+
+double dem_bodies_rotational_energy(const dem_system *s)
+{
+    double e = 0.0;
+    for (int k = 0; k < s->bodies.n; k++) e += rotational_energy(&s->bodies, k);
+    return e;
+}
+
+double dem_bodies_kinetic_energy(const dem_system *s)
+{
+    const dem_bodies *b = &s->bodies;
+    double e = 0.0;
+    for (int k = 0; k < b->n; k++) {
+        const double *v = b->v[k];
+        e += 0.5 * template_of(b, k)->mass.mass * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) + rotational_energy(b, k);
+    }
+    return e;
 }
 
 void dem_bodies_to_state(const dem_system *s, dem_body_state *st)
@@ -293,10 +314,7 @@ void dem_bodies_from_state(dem_system *s, const dem_body_state *st, const char *
         if (p->body[i] < 0 || p->body[i] > b->n)
             dem_fatal("%s: particle id %lld belongs to body %d, but the snapshot has %d bodies", where,
                       (long long)p->id[i], p->body[i] - 1, b->n);
-        const double M = template_of(b, p->body[i] - 1)->mass.mass;
-        p->mass[i] = M;
-        p->inv_mass[i] = 1.0 / M;
-        p->inv_inertia[i] = 1.0 / (0.4 * M * p->radius[i] * p->radius[i]);
+        give_body_mass(p, i, template_of(b, p->body[i] - 1)->mass.mass);
     }
 }
 

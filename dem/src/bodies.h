@@ -83,5 +83,11 @@ double dem_particle_volume(const struct dem_system *s, int i);
 void dem_body_omega(const dem_bodies *b, int k, double w[3]);
 /* Translational + rotational kinetic energy of all bodies [J] (eq. 8 with the principal tensor) */
 double dem_bodies_kinetic_energy(const struct dem_system *s);
+/* Their rotational energy alone, summed over the bodies [J] (seed 004 eq. 8) */
+double dem_bodies_rotational_energy(const struct dem_system *s);
+/* The centres of template t's spheres for a body with its centre of mass at x and the template's
+ * frame turned by q_frame (template frame to space), as dem_bodies_add places them [m]. */
+void dem_body_sphere_centres(const dem_clump_template *t, const double x[3], const double q_frame[4],
+                             double (*centre)[3]);
 
 #endif

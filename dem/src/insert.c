@@ -9,7 +9,6 @@
 #include "dict.h"
 #include "error.h"
 #include "insert.h"
-#include "rigid_rotation.h"
 #include "rng.h"
 #include "system.h"
 
@@ -194,6 +193,29 @@ static void draw_orientation(dem_rng *r, double q[4])
     q[3] = sqrt(u1) * cos(u3);
 }
 
+/* The largest sphere diameter of a template and of the particles already placed (the grid's
+ * cell), and the template's bounding radius about its centre of mass [m]. */
+static double body_grid_size(const dem_system *s, const dem_clump_template *t, double *bound)
+{
+    double dmax = 0.0;
+    *bound = 0.0;
+    for (int k = 0; k < t->n; k++) {
+        const double *o = t->offset[k];
+        *bound = fmax(*bound, sqrt(o[0] * o[0] + o[1] * o[1] + o[2] * o[2]) + t->radius[k]);
+        dmax = fmax(dmax, 2.0 * t->radius[k]);
+    }
+    for (int i = 0; i < s->p.n; i++) dmax = fmax(dmax, 2.0 * s->p.radius[i]);
+    return dmax;
+}
+
+/* The region's smallest extent [m] (a cylinder: its diameter or its length) */
+static double region_smallest_extent(const dem_insertion *ins)
+{
+    return ins->region == REGION_BOX
+        ? fmin(fmin(ins->max[0] - ins->min[0], ins->max[1] - ins->min[1]), ins->max[2] - ins->min[2])
+        : fmin(2.0 * ins->radius, ins->max[ins->axis] - ins->min[ins->axis]);
+}
+
 /* Random insertion of multisphere bodies of one template: a centre in the region (kept its
  * bounding radius from the sides), a random orientation, accepted when none of its spheres
  * overlaps a particle, wall or mirror already there. */
@@ -201,16 +223,9 @@ static long insert_bodies(dem_system *s, const dem_insertion *ins)
 {
     dem_particles *p = &s->p;
     const dem_clump_template *t = &s->bodies.templates[ins->body - 1];
-    double bound = 0.0, dmax = 0.0;
-    for (int k = 0; k < t->n; k++) {
-        const double *o = t->offset[k];
-        bound = fmax(bound, sqrt(o[0] * o[0] + o[1] * o[1] + o[2] * o[2]) + t->radius[k]);
-        dmax = fmax(dmax, 2.0 * t->radius[k]);
-    }
-    for (int i = 0; i < p->n; i++) dmax = fmax(dmax, 2.0 * p->radius[i]);
-    const double extent = ins->region == REGION_BOX
-        ? fmin(fmin(ins->max[0] - ins->min[0], ins->max[1] - ins->min[1]), ins->max[2] - ins->min[2])
-        : fmin(2.0 * ins->radius, ins->max[ins->axis] - ins->min[ins->axis]);
+    double bound;
+    const double dmax = body_grid_size(s, t, &bound);
+    const double extent = region_smallest_extent(ins);
     if (extent < 2.0 * bound)
         dem_fatal_at(ins->source[0] ? ins->source : NULL, "insertion '%s': the region (smallest extent %g m) is smaller "
                      "than the body '%s' (%g m across)", ins->name, extent, t->name, 2.0 * bound);
@@ -227,18 +242,14 @@ static long insert_bodies(dem_system *s, const dem_insertion *ins)
     double volume = 0.0;
     double (*centre)[3] = dem_malloc((size_t)t->n * sizeof *centre);
     while (target > 0 ? placed < target : volume < target_volume) {
-        double x[3], q[4], qb[4];
+        double x[3], q[4];
         int ok = 0;
         for (int attempt = 0; attempt < ins->max_attempts && !ok; attempt++) {
             draw_position(ins, bound, &r, x);
             draw_orientation(&r, q);
-            dem_quat_multiply(q, t->q_axes, qb);
+            dem_body_sphere_centres(t, x, q, centre);
             ok = 1;
-            for (int k = 0; k < t->n && ok; k++) {
-                dem_quat_rotate(qb, t->offset[k], centre[k]);
-                for (int d = 0; d < 3; d++) centre[k][d] += x[d];
-                ok = !overlaps(s, &g, centre[k], t->radius[k]);
-            }
+            for (int k = 0; k < t->n && ok; k++) ok = !overlaps(s, &g, centre[k], t->radius[k]);
         }
         if (!ok)
             dem_fatal_at(ins->source[0] ? ins->source : NULL, "insertion '%s': placed only %ld bodies '%s' (solid fraction "
@@ -282,9 +293,7 @@ long dem_insertion_run(dem_system *s, const dem_insertion *ins)
     long placed = 0;
     double volume = 0.0;
     const double dmax_ins = dem_insertion_max_diameter(ins);
-    const double region_extent_ok = ins->region == REGION_BOX
-        ? fmin(fmin(ins->max[0] - ins->min[0], ins->max[1] - ins->min[1]), ins->max[2] - ins->min[2])
-        : fmin(2.0 * ins->radius, ins->max[ins->axis] - ins->min[ins->axis]);
+    const double region_extent_ok = region_smallest_extent(ins);
     if (region_extent_ok < dmax_ins)
         dem_fatal_at(ins->source[0] ? ins->source : NULL, "insertion '%s': the region (smallest extent %g m) is smaller than the largest "
                   "diameter %g m", ins->name, region_extent_ok, dmax_ins);
@@ -435,9 +444,8 @@ long dem_insertion_add_body_batch(dem_system *s, const dem_insertion *ins, const
 {
     dem_particles *p = &s->p;
     const dem_clump_template *t = &s->bodies.templates[ins->body - 1];
-    double dmax = 0.0;
-    for (int k = 0; k < t->n; k++) dmax = fmax(dmax, 2.0 * t->radius[k]);
-    for (int i = 0; i < p->n; i++) dmax = fmax(dmax, 2.0 * p->radius[i]);
+    double bound;
+    const double dmax = body_grid_size(s, t, &bound);
     long capacity = p->n + (b->n + 1) * t->n;
     grid g;
     grid_init(&g, s, dmax, capacity, capacity);
@@ -448,12 +456,10 @@ long dem_insertion_add_body_batch(dem_system *s, const dem_insertion *ins, const
     for (long i = 0; i < b->n; i++) {
         char where[4200];
         snprintf(where, sizeof where, "%s:%d", file, b->line[i]);
-        double q[4], qb[4];
+        double q[4];
         draw_orientation(&r, q);
-        dem_quat_multiply(q, t->q_axes, qb);
+        dem_body_sphere_centres(t, b->x[i], q, centre);
         for (int k = 0; k < t->n; k++) {
-            dem_quat_rotate(qb, t->offset[k], centre[k]);
-            for (int d = 0; d < 3; d++) centre[k][d] += b->x[i][d];
             for (int d = 0; d < 3; d++)
                 if (!(centre[k][d] - t->radius[k] >= s->domain_min[d] && centre[k][d] + t->radius[k] <= s->domain_max[d]))
                     dem_fatal_at(where, "body '%s' at (%g %g %g) m: its sphere %d leaves the domain", t->name,

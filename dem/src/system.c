@@ -99,13 +99,13 @@ long dem_system_setup_with_contacts(dem_system *s, const dem_contact_store *save
     s->nlist.history_antisymmetric = dem_contact_history_antisymmetric(&s->models);
     dem_contact_rows_free(&s->carried);
     dem_contact_rows_init(&s->carried, s->history_size, s->nlist.history_antisymmetric);
+    if (s->nsymmetry && s->bodies.n)
+        dem_fatal("multisphere bodies with symmetry planes are not supported yet (a plane mirrors spheres, "
+                  "not bodies)");
     for (int d = 0; d < 3; d++) {
         if (s->periodic[d] && s->bodies.n)
             dem_fatal("multisphere bodies in a periodic direction (%c) are not supported yet: close the domain "
                       "with walls", "xyz"[d]);
-        if (d == 0 && s->nsymmetry && s->bodies.n)
-            dem_fatal("multisphere bodies with symmetry planes are not supported yet (a plane mirrors spheres, "
-                      "not bodies)");
         s->period[d] = s->periodic[d] ? s->domain_max[d] - s->domain_min[d] : 0.0;
         s->inv_period[d] = s->periodic[d] ? 1.0 / s->period[d] : 0.0;
     }
