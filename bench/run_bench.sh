@@ -38,18 +38,12 @@ done
 nsettle=20000; nsettled=2000
 if [ $quick = 1 ]; then nsettle=2000; nsettled=200; fi
 
-if [ ! -x /usr/bin/time ]; then
-    echo "installing package 'time' for /usr/bin/time" >&2
-    apt-get install -y time >/dev/null
-fi
+. "$here/timing.sh"   # /usr/bin/time, peak_rss, cpu_time, elapsed
 
 work=$(mktemp -d /tmp/bench50k.XXXXXX)
 [ "${KEEP_WORK:-0}" = 1 ] || trap 'rm -rf "$work"' EXIT
 export OMP_NUM_THREADS=1
 
-# peak RSS [bytes] and CPU time (user + system) [s] from a /usr/bin/time -v report
-peak_rss() { awk -F': *' '/Maximum resident set size/ { print $2 * 1024 }' "$1"; }
-cpu_time() { awk -F': *' '/User time|System time/ { t += $2 } END { print t }' "$1"; }
 
 echo "INFO date $(date -Is) host $(hostname) cpus $(grep -c ^processor /proc/cpuinfo) quick=$quick"
 

@@ -53,19 +53,12 @@ nspheres=4                                   # spheres per clump
 zins=$(awk -v n="$nclumps" 'BEGIN { printf "%.6g", 0.0875 * n / 20000 }')
 endtime=$(awk -v a="$nsettle" -v b="$nsettled" 'BEGIN { printf "%.8g", (1 + a + b) * 1e-5 }')
 
-if [ ! -x /usr/bin/time ]; then
-    echo "installing package 'time' for /usr/bin/time" >&2
-    apt-get install -y time >/dev/null
-fi
+. "$here/timing.sh"   # /usr/bin/time, peak_rss, cpu_time, elapsed
 
 work=$(mktemp -d /tmp/benchms.XXXXXX)
 [ "${KEEP_WORK:-0}" = 1 ] || trap 'rm -rf "$work"' EXIT
 export OMP_NUM_THREADS=1
 
-# peak RSS [bytes], CPU time (user + system) [s] and elapsed wall time [s] from a /usr/bin/time -v report
-peak_rss() { awk -F': *' '/Maximum resident set size/ { print $2 * 1024 }' "$1"; }
-cpu_time() { awk -F': *' '/User time|System time/ { t += $2 } END { print t }' "$1"; }
-elapsed() { awk '/Elapsed \(wall clock\)/ { n = split($NF, p, ":"); s = 0; for (i = 1; i <= n; i++) s = s * 60 + p[i]; print s }' "$1"; }
 
 echo "INFO date $(date -Is) host $(hostname) cpus $(grep -c ^processor /proc/cpuinfo) quick=$quick clumps=$nclumps spheres=$((nclumps * nspheres)) steps=1+$nsettle+$nsettled region_zmax=$zins ours_mass_model=$mass_model"
 
