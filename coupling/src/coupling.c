@@ -461,6 +461,7 @@ void coupling_write(coupling *c, double time)
     dem_restart_save_contacts(&c->s, &cs);
     dem_io_write_snapshot_contacts(c->writer, &c->s.p, c->s.time, c->s.step, &cs);
     dem_contact_state_free(&cs);
+    dem_lifecycle_log(&c->s);
     /* Continue from here as a run continued from this snapshot does (bit for bit): lists made
      * anew (sorted, histories carried by ids), so that contact forces sum in its order, and the
      * void fraction's per-particle weights and cellPoint's tetrahedra made again in that order.

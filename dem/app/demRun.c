@@ -38,7 +38,7 @@ static void usage(void)
 
 static long last_written_step = -1;
 
-static void write_snapshot(dem_particle_writer *w, const dem_system *s)
+static void write_snapshot(dem_particle_writer *w, dem_system *s)
 {
     if (s->step == last_written_step) return;
     dem_contact_state cs;
@@ -46,6 +46,7 @@ static void write_snapshot(dem_particle_writer *w, const dem_system *s)
     dem_io_write_snapshot_contacts(w, &s->p, s->time, s->step, &cs);
     dem_contact_state_free(&cs);
     last_written_step = s->step;
+    dem_lifecycle_log(s);   /* the mass balance, the outlets and streams, at every write */
 }
 
 /* Run nsteps, writing snapshots every write_every steps (0: none) and progress lines. */

@@ -149,7 +149,7 @@ int dem_bodies_add(dem_system *s, int t, const double x[3], const double q_frame
     const int k = append_body(b);
     const dem_clump_template *tp = &b->templates[t];
     b->template_of[k] = t;
-    b->id[k] = k;
+    b->id[k] = b->next_id++;
     dem_quat_multiply(q_frame, tp->q_axes, b->q[k]);   /* principal -> template frame -> space */
     double wb[3];
     dem_quat_rotate_inverse(b->q[k], w, wb);
@@ -298,6 +298,7 @@ void dem_bodies_from_state(dem_system *s, const dem_body_state *st, const char *
         const int j = append_body(b);   /* no spheres added: they are in the snapshot */
         b->template_of[j] = (int)t;
         b->id[j] = st->id[k];
+        if (b->id[j] >= b->next_id) b->next_id = b->id[j] + 1;
         for (int d = 0; d < 3; d++) {
             b->x[j][d] = st->x[3 * k + d];
             b->v[j][d] = st->v[3 * k + d];
@@ -316,6 +317,44 @@ void dem_bodies_from_state(dem_system *s, const dem_body_state *st, const char *
                       (long long)p->id[i], p->body[i] - 1, b->n);
         give_body_mass(p, i, template_of(b, p->body[i] - 1)->mass.mass);
     }
+}
+
+void dem_bodies_remove(dem_system *s, const unsigned char *gone)
+{
+    dem_bodies *b = &s->bodies;
+    const int n0 = b->n;
+    int *renumber = dem_malloc((size_t)(n0 ? n0 : 1) * sizeof(int));   /* old index -> new */
+    int *origin = dem_malloc((size_t)(n0 ? n0 : 1) * sizeof(int));     /* new index -> old */
+    for (int k = 0; k < n0; k++) origin[k] = k;
+    for (int k = b->n - 1; k >= 0; k--) {   /* from the top: the last body, moved in, is one that stays */
+        if (!gone[k]) continue;
+        const int last = b->n - 1;
+        if (k != last) {
+            b->template_of[k] = b->template_of[last];
+            b->id[k] = b->id[last];
+            memcpy(b->x[k], b->x[last], sizeof b->x[k]);
+            memcpy(b->v[k], b->v[last], sizeof b->v[k]);
+            memcpy(b->q[k], b->q[last], sizeof b->q[k]);
+            memcpy(b->Lb[k], b->Lb[last], sizeof b->Lb[k]);
+            memcpy(b->f[k], b->f[last], sizeof b->f[k]);
+            memcpy(b->torque[k], b->torque[last], sizeof b->torque[k]);
+            memcpy(b->R[k], b->R[last], sizeof b->R[k]);
+            memcpy(b->w[k], b->w[last], sizeof b->w[k]);
+            origin[k] = origin[last];
+        }
+        b->n--;
+    }
+    for (int k = 0; k < n0; k++) renumber[k] = -1;
+    for (int k = 0; k < b->n; k++) renumber[origin[k]] = k;
+    free(origin);
+    dem_particles *p = &s->p;
+    for (int i = 0; i < p->n; i++) {
+        if (!p->body[i]) continue;
+        if (gone[p->body[i] - 1])
+            dem_fatal("dem_bodies_remove: particle id %lld of a removed body is still there", (long long)p->id[i]);
+        p->body[i] = renumber[p->body[i] - 1] + 1;
+    }
+    free(renumber);
 }
 
 double dem_particle_volume(const dem_system *s, int i)

@@ -42,6 +42,7 @@ typedef struct dem_bodies {
     int ntemplates;
     dem_clump_template *templates;
     int n, capacity;
+    int64_t next_id;            /* ids stay unique as bodies come and go */
     int *template_of;
     int64_t *id;
     dem_vec3 *x, *v;            /* centre of mass [m], its velocity [m/s] */
@@ -63,6 +64,11 @@ int dem_bodies_add_template(dem_bodies *b, const char *name, int n, const double
  * (space frame); its spheres are appended to the particles. Returns the body's index. */
 int dem_bodies_add(struct dem_system *s, int t, const double x[3], const double q_frame[4], const double v[3],
                    const double w[3]);
+
+/* Remove the bodies k with gone[k] (their spheres must have been removed from the particles
+ * already: lifecycle.h removes a body as one unit); the last body takes a removed one's index and
+ * its spheres are renumbered. */
+void dem_bodies_remove(struct dem_system *s, const unsigned char *gone);
 
 /* The step's parts (system.c calls them): first half kick and drift of each body, its spheres
  * put where it is; after the forces, their sum onto the bodies (also at set-up); the second half

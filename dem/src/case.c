@@ -223,6 +223,15 @@ static void read_cylinder(const dem_dict *d, int *axis, double centre[2], double
     *radius = dem_dict_scalar(d, "radius", 1e-9, 1e6);
 }
 
+/* a point [m] within the coordinates' range (squared distances must not overflow) */
+static void read_point(const dem_dict *e, const char *key, double x[3])
+{
+    dem_dict_vector(e, key, x);
+    for (int k = 0; k < 3; k++)
+        if (!(fabs(x[k]) <= 1e6))
+            dem_dict_fatal(e, key, "%c = %g m is out of range: coordinates lie within [-1e6, 1e6] m", "xyz"[k], x[k]);
+}
+
 static dem_wall *new_wall(dem_system *s, const dem_dict *d, const char *name)
 {
     dem_wall *w = dem_walls_add(s);
@@ -347,6 +356,34 @@ static void read_walls(const dem_dict *root, dem_system *s)
     }
 }
 
+/* outlets { <name> { type plane; point (x y z); normal (nx ny nz); } <name> { type box; min; max; } }:
+ * a plane removes the centres beyond it (the normal points out of the domain), a box those inside. */
+static void read_outlets(const dem_dict *root, dem_system *s)
+{
+    const dem_dict *d = dem_dict_sub_opt(root, "outlets");
+    if (!d) return;
+    static const char *const kinds[] = {"plane", "box", 0};
+    for (int i = 0; i < dem_dict_size(d); i++) {
+        const char *name = dem_dict_key_at(d, i);
+        if (!dem_dict_is_dict_at(d, i)) dem_dict_fatal(d, name, "an outlet is a sub-dictionary { type plane|box; ... }");
+        const dem_dict *e = dem_dict_dict_at(d, i);
+        if (strlen(name) >= sizeof s->outlets[0].name || strchr(name, ' '))
+            dem_dict_fatal(d, name, "an outlet's name has at most %zu characters and no spaces", sizeof s->outlets[0].name - 1);
+        dem_outlet *o = dem_outlets_add(s, name);
+        o->kind = dem_dict_choice(e, "type", kinds) == 0 ? OUTLET_PLANE : OUTLET_BOX;
+        if (o->kind == OUTLET_PLANE) {
+            read_point(e, "point", o->point);
+            dem_dict_vector(e, "normal", o->normal);
+            read_unit_normal(e, o->normal);
+        } else {
+            read_point(e, "min", o->min);
+            read_point(e, "max", o->max);
+            for (int k = 0; k < 3; k++)
+                if (!(o->max[k] > o->min[k])) dem_dict_fatal(e, "max", "max must exceed min in every direction");
+        }
+    }
+}
+
 static void read_diameter(const dem_dict *e, dem_insertion *ins)
 {
     const dem_dict *d = dem_dict_sub(e, "diameter");
@@ -408,6 +445,28 @@ static void read_spacing(const dem_dict *e, dem_insertion *ins)
                    ins->dist == SIZE_CONSTANT ? "" : " (the distribution's largest)");
 }
 
+/* An insertion's region lies inside the domain (a cylinder: its axial range and its box across
+ * the axis). */
+static void check_region_inside(const dem_dict *e, const dem_system *s, const dem_insertion *ins)
+{
+    const dem_dict *r = dem_dict_sub(e, "region");
+    if (ins->region == REGION_BOX) {
+        for (int k = 0; k < 3; k++)
+            if (ins->min[k] < s->domain_min[k] || ins->max[k] > s->domain_max[k])
+                dem_dict_fatal(r, "min", "the region must lie inside the domain");
+        return;
+    }
+    const int a = ins->axis, b = (a + 1) % 3, c = (a + 2) % 3;
+    double lo[3], hi[3];
+    lo[a] = ins->min[a]; lo[b] = ins->centre[0] - ins->radius; lo[c] = ins->centre[1] - ins->radius;
+    hi[a] = ins->max[a]; hi[b] = ins->centre[0] + ins->radius; hi[c] = ins->centre[1] + ins->radius;
+    for (int k = 0; k < 3; k++)
+        if (lo[k] < s->domain_min[k] || hi[k] > s->domain_max[k])
+            dem_dict_fatal(r, k == a ? (lo[k] < s->domain_min[k] ? "axialMin" : "axialMax") : "radius",
+                           "the cylinder must lie inside the domain: in %c it spans [%g, %g] m, the domain "
+                           "[%g, %g] m", "xyz"[k], lo[k], hi[k], s->domain_min[k], s->domain_max[k]);
+}
+
 /* multisphere { <name> { material m; centres ((x y z) ...); radii (r ...); massModel union; } ... }:
  * the templates of multisphere bodies, their spheres in the template's own frame [m]. */
 static void read_multisphere(const dem_dict *root, dem_system *s)
@@ -457,11 +516,147 @@ static int template_of(const dem_dict *e, const dem_system *s)
     return -1;
 }
 
+/* Two unit vectors across the unit normal n. */
+static void plane_basis(const double n[3], double e1[3], double e2[3])
+{
+    const double a[3] = {fabs(n[0]) < 0.9 ? 1.0 : 0.0, fabs(n[0]) < 0.9 ? 0.0 : 1.0, 0.0};
+    const double an = a[0] * n[0] + a[1] * n[1] + a[2] * n[2];
+    for (int k = 0; k < 3; k++) e1[k] = a[k] - an * n[k];
+    const double len = sqrt(e1[0] * e1[0] + e1[1] * e1[1] + e1[2] * e1[2]);
+    for (int k = 0; k < 3; k++) e1[k] /= len;
+    e2[0] = n[1] * e1[2] - n[2] * e1[1];
+    e2[1] = n[2] * e1[0] - n[0] * e1[2];
+    e2[2] = n[0] * e1[1] - n[1] * e1[0];
+}
+
+/* face { type disc; centre (x y z); normal (nx ny nz); radius R; } or
+ * face { type rectangle; min (x y z); max (x y z); normal (+-1 0 0 | ...); } (min = max along the normal):
+ * the plane the stream enters through, its normal pointing into the domain. */
+static void read_stream_face(const dem_dict *e, dem_stream *st, double dmax)
+{
+    const dem_dict *f = dem_dict_sub(e, "face");
+    static const char *const kinds[] = {"disc", "rectangle", 0};
+    const int kind = dem_dict_choice(f, "type", kinds);
+    dem_dict_vector(f, "normal", st->normal);
+    read_unit_normal(f, st->normal);
+    if (kind == 0) {
+        st->shape = STREAM_DISC;
+        read_point(f, "centre", st->centre);
+        st->radius = dem_dict_scalar(f, "radius", 1e-9, 1e6);
+        if (st->radius <= 0.5 * dmax)
+            dem_dict_fatal(f, "radius", "the disc (radius %g m) must be wider than the largest particle (diameter %g m)",
+                           st->radius, dmax);
+        plane_basis(st->normal, st->e1, st->e2);
+        st->area = M_PI * st->radius * st->radius;
+        return;
+    }
+    st->shape = STREAM_RECTANGLE;
+    st->axis = -1;
+    for (int k = 0; k < 3; k++)
+        if (fabs(fabs(st->normal[k]) - 1.0) < 1e-12) st->axis = k;
+    if (st->axis < 0)
+        dem_dict_fatal(f, "normal", "a rectangle face lies across a coordinate axis: its normal is (1 0 0), (0 -1 0), ...");
+    read_point(f, "min", st->fmin);
+    read_point(f, "max", st->fmax);
+    st->area = 1.0;
+    for (int k = 0; k < 3; k++) {
+        if (k == st->axis) {
+            if (st->fmin[k] != st->fmax[k])
+                dem_dict_fatal(f, "max", "the rectangle is flat across its normal: min and max must be equal in %c", "xyz"[k]);
+            continue;
+        }
+        if (!(st->fmax[k] - st->fmin[k] > dmax))
+            dem_dict_fatal(f, "max", "the rectangle is %g m wide in %c: it must be wider than the largest diameter %g m",
+                           st->fmax[k] - st->fmin[k], "xyz"[k], dmax);
+        st->area *= st->fmax[k] - st->fmin[k];
+        st->centre[k] = 0.5 * (st->fmin[k] + st->fmax[k]);
+    }
+    st->centre[st->axis] = st->fmin[st->axis];
+    st->normal[st->axis] = st->normal[st->axis] > 0.0 ? 1.0 : -1.0;
+}
+
+/* The slab a face stream fills lies in the domain: the face and the face moved by depth + the
+ * largest diameter along its normal. */
+static void check_stream_inside(const dem_dict *e, const dem_system *s, const dem_stream *st, double dmax)
+{
+    const dem_dict *f = dem_dict_sub(e, "face");
+    const double reach = st->depth + dmax;
+    for (int k = 0; k < 3; k++) {
+        const double half = st->shape == STREAM_DISC ? st->radius * sqrt(fmax(0.0, 1.0 - st->normal[k] * st->normal[k]))
+                                                      : k == st->axis ? 0.0 : 0.5 * (st->fmax[k] - st->fmin[k]);
+        const double lo = fmin(st->centre[k], st->centre[k] + reach * st->normal[k]) - half;
+        const double hi = fmax(st->centre[k], st->centre[k] + reach * st->normal[k]) + half;
+        const double slack = 1e-9 * (s->domain_max[k] - s->domain_min[k]);
+        if (lo < s->domain_min[k] - slack || hi > s->domain_max[k] + slack)
+            dem_dict_fatal(f, st->shape == STREAM_DISC ? "centre" : "min",
+                           "insertion '%s': the face and the slab it fills (%g m deep along the normal) span [%g, %g] m "
+                           "in %c, outside the domain [%g, %g] m", st->ins.name, reach, lo, hi, "xyz"[k],
+                           s->domain_min[k], s->domain_max[k]);
+    }
+}
+
+/* method stream: particles at a rate through a face or into a region during the run (insert_stream.h).
+ * The settings common to all insertions (name, velocity, seed) are in *ins already. */
+static void read_stream(const dem_dict *e, dem_system *s, const dem_insertion *ins)
+{
+    if (dem_dict_has(e, "body"))
+        dem_dict_fatal(e, "body", "a stream inserts spheres; multisphere bodies during the run are not supported yet");
+    dem_stream *st = dem_streams_add(s);
+    st->ins = *ins;
+    st->ins.material = particle_material_of(e, &s->materials);
+    read_diameter(e, &st->ins);
+    st->ins.max_attempts = (int)dem_dict_label_opt(e, "maxAttempts", 50, 1, 100000000);
+    const double dmax = dem_insertion_max_diameter(&st->ins);
+    if (dem_dict_has(e, "face") == dem_dict_has(e, "region"))
+        dem_dict_fatal_here(e, "give exactly one of 'face' (the plane the particles enter through) and 'region'");
+    if (dem_dict_has(e, "massRate") == dem_dict_has(e, "numberRate"))
+        dem_dict_fatal_here(e, "give exactly one of 'massRate' [kg/s] and 'numberRate' [particles/s]");
+    st->mass_rate = dem_dict_scalar_opt(e, "massRate", 0.0, 1e-30, 1e6);
+    st->number_rate = dem_dict_scalar_opt(e, "numberRate", 0.0, 1e-30, 1e12);
+    st->velocity_std = dem_dict_scalar_opt(e, "velocityStdDev", 0.0, 0.0, 1e3);
+    st->start_time = dem_dict_scalar_opt(e, "startTime", 0.0, 0.0, 1e9);
+    st->end_time = dem_dict_scalar_opt(e, "endTime", INFINITY, st->start_time, INFINITY);
+    st->interval = dem_dict_scalar_opt(e, "insertInterval", 0.0, s->dt, 1e9);
+    st->max_solid_fraction = dem_dict_scalar_opt(e, "maxSolidFraction", 0.25, 1e-3, 0.5);
+    for (int k = 0; k < 3; k++)
+        if (!(fabs(st->ins.velocity[k]) <= 1e5))
+            dem_dict_fatal(e, st->ins.prescribed ? "prescribedVelocity" : "velocity", "%g m/s is out of range: allowed "
+                           "[-1e5, 1e5] m/s", st->ins.velocity[k]);
+    if (dem_dict_has(e, "face")) {
+        read_stream_face(e, st, dmax);
+        const double vn = st->ins.velocity[0] * st->normal[0] + st->ins.velocity[1] * st->normal[1] +
+                          st->ins.velocity[2] * st->normal[2];
+        if (!(vn > 0.0))
+            dem_dict_fatal(e, dem_dict_has(e, "velocity") ? "velocity" : "prescribedVelocity",
+                           "insertion '%s': the velocity (%g %g %g) m/s must cross the face inwards (velocity . normal "
+                           "= %g m/s; the normal points into the domain)", st->ins.name, st->ins.velocity[0],
+                           st->ins.velocity[1], st->ins.velocity[2], vn);
+        dem_stream_prepare(s, st);
+        check_stream_inside(e, s, st, dmax);
+        const double largest = dem_stream_largest_rate(s, st), rate = st->mass_rate > 0.0 ? st->mass_rate : st->number_rate;
+        const char *unit = st->mass_rate > 0.0 ? "kg/s" : "particles/s";
+        if (rate > largest)
+            dem_dict_fatal(e, st->mass_rate > 0.0 ? "massRate" : "numberRate",
+                           "insertion '%s': %g %s does not fit through the face: over its %g m^2 at velocity . normal = "
+                           "%g m/s the stream carries at most %g %s (at solid fraction maxSolidFraction = %g). Lower the "
+                           "rate, or raise the velocity, the face or maxSolidFraction (random placement jams near 0.3).",
+                           st->ins.name, rate, unit, st->area, vn, largest, unit, st->max_solid_fraction);
+    } else {
+        st->shape = STREAM_REGION;
+        read_region(e, &st->ins);
+        check_region_inside(e, s, &st->ins);
+        dem_stream_prepare(s, st);
+    }
+    dem_info("insertion '%s': a stream of %g %s from t = %g s%s, an event every %ld steps (%g s)", st->ins.name,
+             st->mass_rate > 0.0 ? st->mass_rate : st->number_rate, st->mass_rate > 0.0 ? "kg/s" : "particles/s",
+             st->start_time, isfinite(st->end_time) ? "" : " on", st->every, st->every * s->dt);
+}
+
 static void run_insertions(const dem_dict *root, dem_system *s, int insert, const char *constant_dir)
 {
     const dem_dict *d = dem_dict_sub_opt(root, "insertion");
     if (!d) return;
-    static const char *const methods[] = {"random", "lattice", "file", 0};
+    static const char *const methods[] = {"random", "lattice", "file", "stream", 0};
     for (int i = 0; i < dem_dict_size(d); i++) {
         const char *name = dem_dict_key_at(d, i);
         if (!dem_dict_is_dict_at(d, i)) dem_dict_fatal(d, name, "an insertion is a sub-dictionary");
@@ -481,6 +676,11 @@ static void run_insertions(const dem_dict *root, dem_system *s, int insert, cons
             ins.prescribed = 1;
         }
         ins.seed = (uint64_t)dem_dict_label_opt(e, "seed", 12345, 0, 2147483647L);
+        if (ins.method == INSERT_STREAM) {   /* during the run: read on a restart too */
+            if (strchr(name, ' ')) dem_dict_fatal(d, name, "a stream's name has no spaces");
+            read_stream(e, s, &ins);
+            continue;
+        }
         if (ins.method == INSERT_FILE) {
             const char *f = dem_dict_word(e, "file");
             const int n = f[0] == '/' ? snprintf(ins.file, sizeof ins.file, "%s", f)
@@ -516,20 +716,7 @@ static void run_insertions(const dem_dict *root, dem_system *s, int insert, cons
                                       s->gravity[2] * s->gravity[2]);
                 for (int k = 0; k < 3; k++) ins.down[k] = g > 0.0 ? s->gravity[k] / g : (k == 2 ? -1.0 : 0.0);
             }
-            for (int k = 0; k < 3; k++)
-                if (ins.region == REGION_BOX && (ins.min[k] < s->domain_min[k] || ins.max[k] > s->domain_max[k]))
-                    dem_dict_fatal(dem_dict_sub(e, "region"), "min", "the region must lie inside the domain");
-            if (ins.region != REGION_BOX) {   /* a cylinder: its axial range and its box across the axis */
-                const int a = ins.axis, b = (a + 1) % 3, c = (a + 2) % 3;
-                double lo[3], hi[3];
-                lo[a] = ins.min[a]; lo[b] = ins.centre[0] - ins.radius; lo[c] = ins.centre[1] - ins.radius;
-                hi[a] = ins.max[a]; hi[b] = ins.centre[0] + ins.radius; hi[c] = ins.centre[1] + ins.radius;
-                for (int k = 0; k < 3; k++)
-                    if (lo[k] < s->domain_min[k] || hi[k] > s->domain_max[k])
-                        dem_dict_fatal(dem_dict_sub(e, "region"), k == a ? (lo[k] < s->domain_min[k] ? "axialMin" : "axialMax") : "radius",
-                                       "the cylinder must lie inside the domain: in %c it spans [%g, %g] m, the domain "
-                                       "[%g, %g] m", "xyz"[k], lo[k], hi[k], s->domain_min[k], s->domain_max[k]);
-            }
+            check_region_inside(e, s, &ins);
         }
         if (insert) {   /* skipped on restart: the particles come from the snapshot */
             switch (ins.method) {
@@ -542,6 +729,7 @@ static void run_insertions(const dem_dict *root, dem_system *s, int insert, cons
             case INSERT_LATTICE:
                 dem_info("insertion '%s': %ld particles (lattice)", name, dem_insertion_lattice(s, &ins, e));
                 break;
+            case INSERT_STREAM: break;   /* read above */
             case INSERT_FILE:
                 if (ins.body)
                     dem_info("insertion '%s': %ld multisphere bodies '%s' (from %s)", name, dem_insertion_file(s, &ins, e),
@@ -564,6 +752,7 @@ double dem_case_default_max_velocity(const dem_system *s)
         const double *v = s->p.v[i];
         vmax = fmax(vmax, sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]));
     }
+    vmax = fmax(vmax, dem_streams_max_speed(s));   /* the particles still to come */
     for (int k = 0; k < 3; k++) {
         g += s->gravity[k] * s->gravity[k];
         if (s->gravity[k] != 0.0 && !s->periodic[k]) h = fmax(h, s->domain_max[k] - s->domain_min[k]);
@@ -596,6 +785,7 @@ void dem_case_read(const char *case_dir, dem_system *s, dem_run_settings *rs, in
     read_interactions(root, s);
     read_walls(root, s);
     read_multisphere(root, s);
+    read_outlets(root, s);
     char constant_dir[4200];
     snprintf(constant_dir, sizeof constant_dir, "%s/constant", case_dir);
     run_insertions(root, s, !skip_insertion, constant_dir);

@@ -89,7 +89,7 @@ void dem_contacts_gather(const dem_system *s, dem_contact_store *cs)
     const int hs = s->history_size;
     if (hs == 0) return;
     const dem_neighbour_list *nl = &s->nlist;
-    const int64_t *id = s->p.id;
+    const int64_t *id = nl->id_at_build;   /* the particles as the lists hold them */
     for (int i = 0; i < nl->rows; i++)
         for (int k = nl->start[i]; k < nl->start[i + 1]; k++)
             if (nl->touching[k]) dem_contact_store_put(cs, id[i], id[nl->partner[k]], nl->history + (size_t)k * hs);
@@ -161,7 +161,7 @@ void dem_contacts_gather_rows(const dem_system *s, dem_contact_rows *cr)
 {
     const int hs = s->history_size;
     const dem_neighbour_list *nl = &s->nlist;
-    const int64_t *id = s->p.id;
+    const int64_t *id = nl->id_at_build;   /* as built: particles may have gone or moved since */
     cr->count = 0;
     cr->rows = hs ? nl->rows : 0;
     if (cr->rows + 1 > cr->rows_capacity) {

@@ -27,6 +27,22 @@ double dem_insertion_max_diameter(const dem_insertion *ins)
     return 0.0;
 }
 
+double dem_insertion_min_diameter(const dem_insertion *ins)
+{
+    switch (ins->dist) {
+    case SIZE_CONSTANT: return ins->d_value;
+    case SIZE_UNIFORM:
+    case SIZE_NORMAL: return ins->d_min;
+    case SIZE_DISCRETE: {
+        double m = INFINITY;
+        for (int k = 0; k < ins->ndiscrete; k++)
+            if (ins->d_weights[k] > 0.0) m = fmin(m, ins->d_values[k]);
+        return m;
+    }
+    }
+    return 0.0;
+}
+
 double dem_insertion_draw_diameter(const dem_insertion *ins, dem_rng *r)
 {
     switch (ins->dist) {
@@ -67,7 +83,7 @@ double dem_insertion_draw_diameter(const dem_insertion *ins, dem_rng *r)
     return 0.0;
 }
 
-static void draw_position(const dem_insertion *ins, double radius, dem_rng *r, double x[3])
+void dem_insertion_draw_position(const dem_insertion *ins, double radius, dem_rng *r, double x[3])
 {
     if (ins->region == REGION_BOX) {
         for (int d = 0; d < 3; d++)
@@ -183,6 +199,44 @@ static int overlaps(const dem_system *s, const grid *g, const double x[3], doubl
     return 0;
 }
 
+struct dem_placement {
+    grid g;
+    long capacity;   /* of g.next */
+};
+
+dem_placement *dem_placement_begin(const dem_system *s, double dmax, long extra)
+{
+    const dem_particles *p = &s->p;
+    for (int i = 0; i < p->n; i++) dmax = fmax(dmax, 2.0 * p->radius[i]);
+    dem_placement *pl = dem_malloc(sizeof *pl);
+    pl->capacity = p->n + extra + 16;
+    grid_init(&pl->g, s, dmax, p->n + extra, pl->capacity);
+    for (int i = 0; i < p->n; i++) grid_add(&pl->g, p, i);
+    return pl;
+}
+
+int dem_placement_free(const dem_placement *pl, const dem_system *s, const double x[3], double radius)
+{
+    return !overlaps(s, &pl->g, x, radius);
+}
+
+void dem_placement_add(dem_placement *pl, const dem_system *s, int i)
+{
+    if (i >= pl->capacity) {
+        pl->capacity = 2 * (long)i + 16;
+        pl->g.next = dem_realloc(pl->g.next, (size_t)pl->capacity * sizeof(int));
+    }
+    grid_add(&pl->g, &s->p, i);
+}
+
+void dem_placement_end(dem_placement *pl)
+{
+    if (!pl) return;
+    free(pl->g.head);
+    free(pl->g.next);
+    free(pl);
+}
+
 /* A uniformly random rotation (Shoemake, Graphics Gems III, 1992: uniform on the unit 3-sphere). */
 static void draw_orientation(dem_rng *r, double q[4])
 {
@@ -245,7 +299,7 @@ static long insert_bodies(dem_system *s, const dem_insertion *ins)
         double x[3], q[4];
         int ok = 0;
         for (int attempt = 0; attempt < ins->max_attempts && !ok; attempt++) {
-            draw_position(ins, bound, &r, x);
+            dem_insertion_draw_position(ins, bound, &r, x);
             draw_orientation(&r, q);
             dem_body_sphere_centres(t, x, q, centre);
             ok = 1;
@@ -303,7 +357,7 @@ long dem_insertion_run(dem_system *s, const dem_insertion *ins)
         double x[3];
         int ok = 0;
         for (int attempt = 0; attempt < ins->max_attempts && !ok; attempt++) {
-            draw_position(ins, radius, &r, x);
+            dem_insertion_draw_position(ins, radius, &r, x);
             ok = !overlaps(s, &g, x, radius);
         }
         if (!ok)

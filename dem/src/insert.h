@@ -17,7 +17,7 @@
 #include "particles.h"
 #include "rng.h"
 
-enum dem_insertion_method { INSERT_RANDOM, INSERT_LATTICE, INSERT_FILE };
+enum dem_insertion_method { INSERT_RANDOM, INSERT_LATTICE, INSERT_FILE, INSERT_STREAM };
 enum dem_size_distribution { SIZE_CONSTANT, SIZE_UNIFORM, SIZE_NORMAL, SIZE_DISCRETE };
 enum dem_region_kind { REGION_BOX, REGION_CYLINDER };
 
@@ -65,6 +65,20 @@ struct dem_dict;
 /* Random insertion; fatal (naming the insertion) when the particles do not fit. Returns the count. */
 long dem_insertion_run(struct dem_system *s, const dem_insertion *ins);
 double dem_insertion_max_diameter(const dem_insertion *ins);
+double dem_insertion_min_diameter(const dem_insertion *ins);   /* the smallest it may draw [m] */
+/* A centre in the insertion's region, a radius inside its sides. */
+void dem_insertion_draw_position(const dem_insertion *ins, double radius, dem_rng *r, double x[3]);
+
+/* Placing particles one at a time among those already there (and walls and mirrors), on a grid
+ * over the domain of cells no smaller than dmax or the largest particle present; room for
+ * `extra` more (it grows). */
+typedef struct dem_placement dem_placement;
+dem_placement *dem_placement_begin(const struct dem_system *s, double dmax, long extra);
+/* 1 if a sphere of `radius` at x overlaps no particle, wall or mirror */
+int dem_placement_free(const dem_placement *pl, const struct dem_system *s, const double x[3], double radius);
+/* particle i (just added) among those the next look-ups see */
+void dem_placement_add(dem_placement *pl, const struct dem_system *s, int i);
+void dem_placement_end(dem_placement *pl);
 double dem_insertion_draw_diameter(const dem_insertion *ins, dem_rng *r);
 
 /* Lattice points of the region, in order (x fastest, then y, then z), keeping the lowest

@@ -35,8 +35,23 @@ typedef struct dem_body_state {
     double *x, *v, *q, *Lb, *omega, *f, *torque, *e_rot;   /* 3 per body; q 4; e_rot 1 */
 } dem_body_state;
 
+/* The life cycle's counters (lifecycle.h), written as /snapshots/<k>/lifecycle/: the balance
+ * (inserted and removed: count, mass as two int64 of 2^-64 kg quanta), per outlet its removed
+ * tally, per stream insertion its random stream, tally, carry-over and what is behind; the names
+ * as space-separated string attributes, so that a restart gives each its own. */
+enum { LIFECYCLE_STREAM_INTS = 9, LIFECYCLE_STREAM_REALS = 2 };
+typedef struct dem_lifecycle_state {
+    int present;                 /* reader: the snapshot had the group */
+    int64_t balance[6];          /* inserted count, mass hi, lo; removed count, mass hi, lo */
+    int noutlets, nstreams;
+    int64_t *outlets;            /* 3 per outlet: count, mass hi, lo */
+    int64_t *streams;            /* LIFECYCLE_STREAM_INTS per stream: rng (4), count, mass hi, lo, carried, behind */
+    double *stream_reals;        /* LIFECYCLE_STREAM_REALS per stream: pending diameter [m], behind [kg] */
+    char *outlet_names, *stream_names;   /* space-separated */
+} dem_lifecycle_state;
+
 /* Contact history in a form independent of particle order and neighbour lists (contacts.h),
- * and the snapshot's other non-particle state (the bodies). */
+ * and the snapshot's other non-particle state (the bodies, the life cycle's counters). */
 typedef struct dem_contact_state {
     int history_size;        /* doubles per contact */
     int nwalls;              /* walls of the case that wrote it (wall contacts name their index) */
@@ -46,6 +61,7 @@ typedef struct dem_contact_state {
     int forces_read;         /* reader: p->f and p->torque hold the snapshot's forces */
     int coupling_read;       /* reader: p->beta and p->f_fluid hold the snapshot's (coupled runs) */
     dem_body_state bodies;   /* multisphere bodies (count 0: none) */
+    dem_lifecycle_state lifecycle;
 } dem_contact_state;
 
 void dem_contact_state_free(dem_contact_state *cs);

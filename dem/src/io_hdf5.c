@@ -176,6 +176,22 @@ static int read_scalar_attr(hid_t obj, const char *name, hid_t mem_type, void *v
     return 1;
 }
 
+/* A string attribute, malloc'd; NULL when it does not exist. */
+static char *read_string_attr(hid_t obj, const char *name, const char *path)
+{
+    if (!chk(H5Aexists(obj, name), path, "cannot query attribute")) return NULL;
+    hid_t attr = chk(H5Aopen(obj, name, H5P_DEFAULT), path, "cannot open attribute");
+    hid_t type = chk(H5Aget_type(attr), path, "cannot get attribute type");
+    if (H5Tget_class(type) != H5T_STRING || H5Tis_variable_str(type) > 0)
+        dem_fatal("HDF5 file '%s': attribute '%s' is not a fixed-length string", path, name);
+    const size_t size = H5Tget_size(type);
+    char *value = dem_calloc(size + 1, 1);
+    chk(H5Aread(attr, type, value), path, "cannot read string attribute");
+    H5Tclose(type);
+    H5Aclose(attr);
+    return value;
+}
+
 /* ---------------------------------------------------------------- snapshot listing */
 
 typedef struct scan_state {
@@ -423,11 +439,18 @@ static void body_state_free(dem_body_state *b)
     memset(b, 0, sizeof *b);
 }
 
+static void lifecycle_state_free(dem_lifecycle_state *l)
+{
+    free(l->outlets); free(l->streams); free(l->stream_reals); free(l->outlet_names); free(l->stream_names);
+    memset(l, 0, sizeof *l);
+}
+
 void dem_contact_state_free(dem_contact_state *cs)
 {
     free(cs->keys);
     free(cs->history);
     body_state_free(&cs->bodies);
+    lifecycle_state_free(&cs->lifecycle);
     memset(cs, 0, sizeof *cs);
 }
 
@@ -493,6 +516,20 @@ static void write_bodies(hid_t g, const dem_body_state *b, const char *path)
     H5Gclose(c);
 }
 
+static void write_lifecycle(hid_t g, const dem_lifecycle_state *l, const char *path)
+{
+    hid_t c = chk(H5Gcreate2(g, "lifecycle", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), path, "cannot create lifecycle group");
+    write_matrix(c, "balance", H5T_STD_I64LE, H5T_NATIVE_INT64, l->balance, 1, 6, path);
+    write_matrix(c, "outlets", H5T_STD_I64LE, H5T_NATIVE_INT64, l->outlets, l->noutlets, 3, path);
+    write_matrix(c, "streams", H5T_STD_I64LE, H5T_NATIVE_INT64, l->streams, l->nstreams, LIFECYCLE_STREAM_INTS, path);
+    write_matrix(c, "stream_reals", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, l->stream_reals, l->nstreams,
+                 LIFECYCLE_STREAM_REALS, path);
+    write_string_attr(c, "outlet_names", l->outlet_names ? l->outlet_names : "", path);
+    write_string_attr(c, "stream_names", l->stream_names ? l->stream_names : "", path);
+    write_string_attr(c, "mass_units", "2^-64 kg, as two int64 (high, low)", path);
+    H5Gclose(c);
+}
+
 void dem_io_write_snapshot(dem_particle_writer *w, const dem_particles *p, double time, long step)
 {
     dem_io_write_snapshot_contacts(w, p, time, step, NULL);
@@ -515,6 +552,7 @@ void dem_io_write_snapshot_contacts(dem_particle_writer *w, const dem_particles 
         if (dem_particle_fields[k].flags & (PF_WRITE | PF_RESTART)) write_field(g, &dem_particle_fields[k], p, n, path);
     if (cs && cs->history_size > 0) write_contacts(g, cs, path);
     if (cs && cs->bodies.count > 0) write_bodies(g, &cs->bodies, path);
+    if (cs && cs->lifecycle.present) write_lifecycle(g, &cs->lifecycle, path);
 
     const long long step_ll = step;
     write_scalar_attr(g, "time", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &time, path);
@@ -665,6 +703,30 @@ static void read_bodies(hid_t g, dem_body_state *b, const char *path)
     H5Gclose(c);
 }
 
+static void read_lifecycle(hid_t g, dem_lifecycle_state *l, const char *path)
+{
+    memset(l, 0, sizeof *l);
+    if (!chk(H5Lexists(g, "lifecycle", H5P_DEFAULT), path, "cannot query lifecycle group")) return;
+    hid_t c = chk(H5Gopen2(g, "lifecycle", H5P_DEFAULT), path, "cannot open lifecycle group");
+    int64_t rows;
+    int64_t *balance = read_matrix(c, "balance", H5T_NATIVE_INT64, sizeof(int64_t), 6, &rows, path);
+    if (rows != 1) dem_fatal("HDF5 file '%s': lifecycle/balance has %" PRId64 " rows (1 expected)", path, rows);
+    memcpy(l->balance, balance, sizeof l->balance);
+    free(balance);
+    l->outlets = read_matrix(c, "outlets", H5T_NATIVE_INT64, sizeof(int64_t), 3, &rows, path);
+    l->noutlets = (int)rows;
+    l->streams = read_matrix(c, "streams", H5T_NATIVE_INT64, sizeof(int64_t), LIFECYCLE_STREAM_INTS, &rows, path);
+    l->nstreams = (int)rows;
+    l->stream_reals = read_matrix(c, "stream_reals", H5T_NATIVE_DOUBLE, sizeof(double), LIFECYCLE_STREAM_REALS, &rows, path);
+    if (rows != l->nstreams)
+        dem_fatal("HDF5 file '%s': lifecycle/stream_reals has %" PRId64 " rows for %d streams", path, rows, l->nstreams);
+    l->outlet_names = read_string_attr(c, "outlet_names", path);
+    l->stream_names = read_string_attr(c, "stream_names", path);
+    if (!l->outlet_names || !l->stream_names) dem_fatal("HDF5 file '%s': lifecycle group without its names", path);
+    l->present = 1;
+    H5Gclose(c);
+}
+
 int dem_io_read_last_snapshot(const char *base, dem_particles *p, double *time, long *step)
 {
     return dem_io_read_last_snapshot_contacts(base, p, time, step, NULL);
@@ -716,11 +778,13 @@ int dem_io_read_snapshot_at(const char *base, double at_time, double tolerance, 
     const int n = (int)last.n;
     dem_particles_reserve(p, n);
     p->n = n;
+    p->generation++;
     int found[PARTICLE_FIELD_COUNT];
     read_restart_fields(g, p, n, name, path, found);
     if (cs) {
         read_contacts(g, cs, path);
         read_bodies(g, &cs->bodies, path);
+        read_lifecycle(g, &cs->lifecycle, path);
         cs->forces_read = found[PF_FIELD_f] && found[PF_FIELD_torque];
         cs->coupling_read = found[PF_FIELD_beta] && found[PF_FIELD_f_fluid];
     }

@@ -17,7 +17,7 @@ void dem_neighbour_init(dem_neighbour_list *nl, double skin, int sort_interval, 
 
 void dem_neighbour_free(dem_neighbour_list *nl)
 {
-    free(nl->start); free(nl->partner); free(nl->history); free(nl->touching); free(nl->x_at_build);
+    free(nl->start); free(nl->partner); free(nl->history); free(nl->touching); free(nl->x_at_build); free(nl->id_at_build);
     free(nl->cell_start); free(nl->cell_of); free(nl->cell_order);
     memset(nl, 0, sizeof *nl);
 }
@@ -206,6 +206,12 @@ void dem_neighbour_rebuild(dem_system *s)
         nl->x_at_build = dem_realloc(nl->x_at_build, (size_t)p->n * sizeof(dem_vec3));
     }
     memcpy(nl->x_at_build, p->x, (size_t)p->n * sizeof(dem_vec3));
+    if (total > nl->id_capacity) {
+        nl->id_capacity = total + total / 4 + 16;
+        nl->id_at_build = dem_realloc(nl->id_at_build, (size_t)nl->id_capacity * sizeof(int64_t));
+    }
+    memcpy(nl->id_at_build, p->id, (size_t)total * sizeof(int64_t));
+    nl->generation = p->generation;
     nl->builds++;
     nl->schedule++;
 }

@@ -25,6 +25,12 @@ typedef struct dem_neighbour_list {
     int rows;                    /* particles the list was built for */
     dem_vec3 *x_at_build;            /* positions at the last build */
     int build_capacity;
+    /* What the list was built for: the particles' generation (particles.h) and the id at each
+     * index, the images' too (rows + images entries). The contacts are carried by these ids, so a
+     * particle removed or moved to another index since the build leaves no wrong history. */
+    long generation;
+    int64_t *id_at_build;
+    int id_capacity;
     long builds, sorts;              /* since the start of the run */
     long schedule;                   /* builds since the sorting schedule began (a relist begins it again) */
     /* cells */

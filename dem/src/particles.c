@@ -56,6 +56,7 @@ static int append_zeroed(dem_particles *p)
 {
     if (p->n == p->capacity) dem_particles_reserve(p, p->capacity ? 2 * p->capacity : 1024);
     const int i = p->n++;
+    p->generation++;
 #define PF_ZERO(member, element, unit, dataset, flags) memset(&p->member[i], 0, sizeof *p->member);
     PARTICLE_FIELDS(PF_ZERO)
 #undef PF_ZERO
@@ -77,6 +78,14 @@ int dem_particles_add(dem_particles *p, const double x[3], const double v[3], do
     return i;
 }
 
+void dem_particles_remove(dem_particles *p, int i)
+{
+    if (i < 0 || i >= p->n) dem_fatal("dem_particles_remove: index %d outside the %d particles", i, p->n);
+    dem_particles_copy(p, p->n - 1, i);
+    p->n--;
+    p->generation++;
+}
+
 /* Each field gathered through `order` into scratch and copied back; the element size is a
  * constant in each expansion, so the copies compile to moves. */
 void dem_particles_permute(dem_particles *p, const int *order)
@@ -95,6 +104,7 @@ void dem_particles_permute(dem_particles *p, const int *order)
     PARTICLE_FIELDS(PF_PERMUTE)
 #undef PF_PERMUTE
     free(scratch);
+    p->generation++;
 }
 
 void dem_particles_copy(dem_particles *p, int from, int to)

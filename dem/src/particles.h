@@ -94,6 +94,12 @@ enum dem_particle_scalar { PF_DOUBLE, PF_INT, PF_INT64 };
 typedef struct dem_particles {
     int n;                 /* particles in use */
     int capacity;
+    /* Bumped whenever the set of particles or their order changes (add, remove, permute,
+     * unpack): whatever is kept per particle index outside this table (the neighbour list, the
+     * ghosts, the wall lists, the coupling's weights and tetrahedra) was made for one generation
+     * and is stale when the number differs. A count cannot tell: one removal plus one insertion
+     * leaves it as it was. */
+    long generation;
 #define PF_MEMBER(member, element, unit, dataset, flags) PF_CTYPE_##element *member;
     PARTICLE_FIELDS(PF_MEMBER)
 #undef PF_MEMBER
@@ -140,6 +146,10 @@ int dem_particles_add(dem_particles *p, const double x[3], const double v[3], do
 void dem_particles_set_mass(dem_particles *p, int i, double density);
 /* Particle i moves at its present velocity from now on, without rotation, whatever the forces. */
 void dem_particles_prescribe(dem_particles *p, int i);
+/* Remove particle i: the last particle takes its index (so every other index stays as it is).
+ * Several removals go from the highest index down: then the particle moved in is never one
+ * still to be removed. */
+void dem_particles_remove(dem_particles *p, int i);
 /* Reorder all arrays so that new index k holds old index order[k]. */
 void dem_particles_permute(dem_particles *p, const int *order);
 /* Every field of particle `from` copied onto particle `to` (both within the capacity; the

@@ -14,6 +14,7 @@ void dem_restart_save_contacts(const dem_system *s, dem_contact_state *cs)
     dem_contacts_to_state(&store, s->nwalls, cs);
     dem_contact_store_free(&store);
     if (s->bodies.n) dem_bodies_to_state(s, &cs->bodies);
+    dem_lifecycle_to_state(s, &cs->lifecycle);
 }
 
 void dem_restart_setup(dem_system *s, const dem_contact_state *cs)
@@ -49,10 +50,10 @@ int dem_restart_read(dem_system *s, const char *base, double at_time, double tol
         dem_particles_set_mass(&s->p, i, s->materials.mat[s->p.type[i]].density);
         if (s->p.id[i] >= s->next_id) s->next_id = s->p.id[i] + 1;
     }
-    if (cs && cs->bodies.count > 0) {   /* multisphere bodies: their spheres take their mass */
-        char where[4200];
-        snprintf(where, sizeof where, "%s.h5", base);
+    char where[4200];
+    snprintf(where, sizeof where, "%s.h5", base);
+    if (cs && cs->bodies.count > 0)   /* multisphere bodies: their spheres take their mass */
         dem_bodies_from_state(s, &cs->bodies, where);
-    }
+    dem_lifecycle_from_state(s, cs ? &cs->lifecycle : NULL, where);
     return 0;
 }

@@ -24,6 +24,8 @@ void dem_system_free(dem_system *s)
     dem_walls_free(s);
     dem_ghosts_free(&s->ghosts);
     dem_contact_rows_free(&s->carried);
+    free(s->outlets);
+    dem_streams_free(s);
     memset(s, 0, sizeof *s);
 }
 
@@ -39,6 +41,7 @@ static void check_step_motion(const dem_system *s)
     const dem_vec3 *x0 = s->nlist.x_at_build;
     const int listed = p->n < s->nlist.rows ? p->n : s->nlist.rows;
     for (int i = 0; i < listed; i++) {
+        if (p->id[i] != s->nlist.id_at_build[i]) continue;   /* another particle since the build */
         const double dx = p->x[i][0] - x0[i][0], dy = p->x[i][1] - x0[i][1], dz = p->x[i][2] - x0[i][2];
         const double lim = 0.5 * (s->nlist.skin + p->radius[i]);
         if (!(dx * dx + dy * dy + dz * dz <= lim * lim)) {
@@ -62,9 +65,11 @@ static void remake_lists(dem_system *s)
     dem_contacts_scatter_rows(s, &s->carried);
 }
 
-static void rebuild(dem_system *s)
+/* A rebuild within a step; with `lifecycle`, outlets remove and streams insert first. */
+static void rebuild(dem_system *s, int lifecycle)
 {
     check_step_motion(s);
+    if (lifecycle) dem_lifecycle_apply(s);
     remake_lists(s);
 }
 
@@ -82,7 +87,9 @@ static void prepare_models(dem_system *s)
     const dem_contact_model *normal = system_model(s, SLOT_NORMAL);
     s->contact_reach = 0.0;
     if (normal->reach) {
-        double rmax = 0.0;
+        double dmin, dmax;
+        dem_streams_diameters(s, -1, &dmin, &dmax);   /* and the particles still to come */
+        double rmax = 0.5 * dmax;
         for (int i = 0; i < s->p.n; i++) rmax = fmax(rmax, s->p.radius[i]);
         for (int a = 0; a < t->ntypes; a++)
             for (int b = 0; b < t->ntypes; b++)
@@ -109,10 +116,16 @@ long dem_system_setup_with_contacts(dem_system *s, const dem_contact_store *save
         s->period[d] = s->periodic[d] ? s->domain_max[d] - s->domain_min[d] : 0.0;
         s->inv_period[d] = s->periodic[d] ? 1.0 / s->period[d] : 0.0;
     }
-    if (s->nlist.skin <= 0.0) {
-        double rmin = INFINITY;
+    if (s->nlist.skin <= 0.0) {   /* 10 % of the smallest diameter, the streams' included */
+        double dmin, dmax;
+        dem_streams_diameters(s, -1, &dmin, &dmax);
+        double rmin = 0.5 * dmin;
         for (int i = 0; i < s->p.n; i++) rmin = fmin(rmin, s->p.radius[i]);
-        s->nlist.skin = s->p.n ? 0.2 * rmin : 1e-3;   /* 10 % of the smallest diameter */
+        s->nlist.skin = isfinite(rmin) ? 0.2 * rmin : 1e-3;
+    }
+    if (!s->balance_started) {   /* a fresh run: the initial particles count as inserted */
+        s->inserted = dem_lifecycle_held(s);
+        s->balance_started = 1;
     }
     prepare_models(s);
     dem_walls_move(s, s->time);
@@ -211,14 +224,15 @@ static void kick_drift_reset(dem_system *s)
     }
 }
 
-/* Whether some particle moved more than half the skin since the last list build (or particles
- * were added since). */
+/* Whether some particle moved more than half the skin since the last list build (or the
+ * particle set changed since: its generation). */
 static int moved_far_since_build(const dem_system *s)
 {
+    if (s->p.generation != s->nlist.generation) return 1;
     const dem_vec3 *restrict x = s->p.x, *restrict x0 = s->nlist.x_at_build;
     const double limit = 0.25 * s->nlist.skin * s->nlist.skin;
-    const int listed = s->p.n < s->nlist.rows ? s->p.n : s->nlist.rows;   /* added since: rebuild */
-    int moved_far = s->p.n != s->nlist.rows;
+    const int listed = s->p.n;
+    int moved_far = 0;
     for (int i = 0; i < listed; i++) {
         const double dx = x[i][0] - x0[i][0], dy = x[i][1] - x0[i][1], dz = x[i][2] - x0[i][2];
         moved_far |= dx * dx + dy * dy + dz * dz > limit;
@@ -232,7 +246,8 @@ void dem_system_step(dem_system *s)
     kick_drift_reset(s);
     if (s->bodies.n) dem_bodies_kick_drift(s);   /* the bodies' spheres put where their body is */
     const int moved_far = moved_far_since_build(s);
-    if (dem_walls_move(s, s->time + s->dt) || moved_far) rebuild(s);   /* walls at the end of the step */
+    const int lifecycle = (s->noutlets || s->nstreams) && dem_lifecycle_due(s);   /* particles out or due in */
+    if (dem_walls_move(s, s->time + s->dt) || moved_far || lifecycle) rebuild(s, lifecycle);   /* walls at the step's end */
     add_contact_forces(s);
     half_kick(p, s->dt);
     if (s->bodies.n) dem_bodies_kick(s);

@@ -6,8 +6,11 @@
 #include "contact/models.h"
 #include "contacts.h"
 #include "ghosts.h"
+#include "insert_stream.h"
+#include "lifecycle.h"
 #include "materials.h"
 #include "neighbour.h"
+#include "outlets.h"
 #include "particles.h"
 #include "symmetry.h"
 #include "walls.h"
@@ -35,6 +38,13 @@ typedef struct dem_system {
     dem_neighbour_list nlist;
     dem_ghost_list ghosts;                /* periodic images, stored after the particles (ghosts.h) */
     dem_contact_rows carried;             /* the contacts' history across a rebuild (contacts.h) */
+
+    /* the life cycle during the run (lifecycle.h) */
+    int noutlets, nstreams;
+    dem_outlet *outlets;                  /* dem_outlets_add() appends */
+    dem_stream *streams;                  /* dem_streams_add() appends */
+    dem_tally inserted, removed;          /* units since the run began (the initial insertion included) */
+    int balance_started;                  /* inserted holds the initial set (set-up or a restart's snapshot) */
 
     double gravity[3];                /* [m/s^2] */
     double dt;                        /* [s] */

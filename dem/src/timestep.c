@@ -25,6 +25,11 @@ dem_timestep_limits dem_timestep_limits_compute(const dem_system *s, double max_
     double rmin[DEM_MAX_TYPES];
     for (int t = 0; t < nt; t++) rmin[t] = INFINITY;
     for (int i = 0; i < p->n; i++) rmin[p->type[i]] = fmin(rmin[p->type[i]], p->radius[i]);
+    for (int t = 0; t < nt; t++) {   /* and the particles the streams will insert */
+        double dmin, dmax;
+        dem_streams_diameters(s, t, &dmin, &dmax);
+        rmin[t] = fmin(rmin[t], 0.5 * dmin);
+    }
 
     dem_timestep_limits lim = {INFINITY, INFINITY, INFINITY, "-", "-"};
     static char pair_name[2 * DEM_NAME_LEN + 16];
@@ -62,7 +67,7 @@ dem_timestep_limits dem_timestep_limits_compute(const dem_system *s, double max_
 
 void dem_timestep_check(const dem_system *s, double max_velocity, int override, const char *source)
 {
-    if (s->p.n == 0) {
+    if (s->p.n == 0 && s->nstreams == 0) {
         dem_info("time step %g s: not checked, there are no particles", s->dt);
         return;
     }
