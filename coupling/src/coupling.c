@@ -53,6 +53,7 @@ struct coupling {
     double (*ugp_p)[6];
     cpl_interp_tet *tets;          /* cellPoint: each particle's tetrahedron (current order) */
     int tets_valid, field_set;
+    long tets_generation, vf_generation;   /* the particles' generation (particles.h) they were made for */
     cpl_force_params params;
     cpl_fluid_forces forces;
     int interval;
@@ -152,6 +153,7 @@ static void update_void_fraction(coupling *c)
     particle_volumes(c);
     const int outside = cpl_vf_compute_volumes(&c->vf, &c->mesh, p->n, (const double (*)[3])p->x, p->radius,
                                                c->volume, p->fluid_cell);
+    c->vf_generation = p->generation;
     if (outside > 0 && outside != c->outside_reported) {
         dem_warning("coupling: %d particle(s) lie outside the fluid mesh at t = %g s; they feel no fluid "
                     "force and give none to the fluid", outside, c->s.time);
@@ -168,6 +170,7 @@ static void evaluate_forces(coupling *c, const double (*U)[3], const double (*gr
                             int new_positions)
 {
     dem_particles *p = &c->s.p;
+    if (c->vf_generation != p->generation) update_void_fraction(c);   /* particles came or went since */
     const cpl_cell_weights w = weights_of(c);
     cpl_gather_scalar(&w, c->vf.alpha, c->alpha_p);
     if (c->interp_scheme == CPL_INTERP_CELL) {   /* the spreading weights: exact balance */
@@ -181,9 +184,10 @@ static void evaluate_forces(coupling *c, const double (*U)[3], const double (*gr
             c->field_set = 1;
         }
         if (c->interp_scheme == CPL_INTERP_CELL_POINT) {
-            if (new_positions || !c->tets_valid)
+            if (new_positions || !c->tets_valid || c->tets_generation != p->generation)
                 cpl_interp_locate(&c->interp, &c->mesh, p->n, p->fluid_cell, (const double (*)[3])p->x, c->tets);
             c->tets_valid = 1;
+            c->tets_generation = p->generation;
             cpl_interp_apply(&c->interp, &c->mesh, p->n, c->tets, &c->ugp_p[0][0]);
         } else {
             cpl_interp_particles(&c->interp, &c->mesh, p->n, p->fluid_cell, (const double (*)[3])p->x, &c->ugp_p[0][0]);

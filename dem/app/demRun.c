@@ -49,14 +49,16 @@ static void write_snapshot(dem_particle_writer *w, dem_system *s)
     dem_lifecycle_log(s);   /* the mass balance, the outlets and streams, at every write */
 }
 
-/* Run nsteps, writing snapshots every write_every steps (0: none) and progress lines. */
-static void run_steps(dem_system *s, long nsteps, long write_every, dem_particle_writer *w,
-                      double progress_interval)
+/* Run nsteps, writing snapshots every write_every steps (0: none) and progress lines; returns
+ * the particle-steps (the particle count may change from step to step: streams, outlets). */
+static double run_steps(dem_system *s, long nsteps, long write_every, dem_particle_writer *w,
+                        double progress_interval)
 {
     const double start = wall_clock();
-    double next_report = start + progress_interval;
+    double next_report = start + progress_interval, particle_steps = 0.0;
     for (long k = 1; k <= nsteps; k++) {
         dem_system_step(s);
+        particle_steps += s->p.n;
         if (write_every > 0 && s->step % write_every == 0) {
             write_snapshot(w, s);
             dem_system_relist(s);   /* as a restart from this snapshot will: the two runs stay equal */
@@ -64,8 +66,8 @@ static void run_steps(dem_system *s, long nsteps, long write_every, dem_particle
         if (progress_interval > 0 && (k & 63) == 0) {
             const double now = wall_clock();
             if (now >= next_report) {
-                const double rate = (double)k * s->p.n / (now - start);
-                const double eta = (double)(nsteps - k) * s->p.n / rate;
+                const double rate = particle_steps / (now - start);
+                const double eta = (double)(nsteps - k) * (now - start) / (double)k;
                 printf("step %ld  t = %.6g s  %5.1f %%  %d particles  %.3g particle-steps/s  "
                        "ETA %.0f s\n", s->step, s->time, 100.0 * k / nsteps, s->p.n, rate, eta);
                 fflush(stdout);
@@ -73,6 +75,7 @@ static void run_steps(dem_system *s, long nsteps, long write_every, dem_particle
             }
         }
     }
+    return particle_steps;
 }
 
 int main(int argc, char **argv)
@@ -113,6 +116,7 @@ int main(int argc, char **argv)
 
     const double t0 = wall_clock();
     long total_steps = 0;
+    double particle_steps = 0.0;
     if (phases) {
         int k = 0;
         for (const char *c = phases; *c;) {
@@ -120,10 +124,11 @@ int main(int argc, char **argv)
             const long n = strtol(c, &end, 10);
             if (end == c || n < 0) usage();
             const double start = wall_clock(), cpu_start = cpu_clock();
-            run_steps(&s, n, 0, w, rs.progress_interval);
+            const double ps = run_steps(&s, n, 0, w, rs.progress_interval);
+            particle_steps += ps;
             const double secs = wall_clock() - start, cpu = cpu_clock() - cpu_start;
             printf("PHASE %d steps=%ld particles=%d wall_s=%.3f particle_steps_per_s=%.4g cpu_s=%.3f\n", k++, n,
-                   s.p.n, secs, secs > 0 ? (double)n * s.p.n / secs : 0.0, cpu);
+                   s.p.n, secs, secs > 0 ? ps / secs : 0.0, cpu);
             total_steps += n;
             c = *end == ',' ? end + 1 : end;
         }
@@ -133,7 +138,7 @@ int main(int argc, char **argv)
         const double per_write = rs.write_interval / s.dt;
         const long write_every = rs.write_interval > 0 && per_write < (double)nsteps ? (long)fmax(1.0, llround(per_write)) : 0;
         printf("running %ld steps of %g s to t = %g s, %d particles\n", nsteps, s.dt, rs.end_time, s.p.n);
-        run_steps(&s, nsteps, write_every, w, rs.progress_interval);
+        particle_steps = run_steps(&s, nsteps, write_every, w, rs.progress_interval);
         total_steps = nsteps;
     }
     dem_system_check_health(&s);
@@ -142,7 +147,7 @@ int main(int argc, char **argv)
     const double secs = wall_clock() - t0;
     printf("done: t = %g s, %ld steps in %.2f s wall (%.3g particle-steps/s), %ld neighbour "
            "builds, %ld sorts, kinetic energy %.6g J\n",
-           s.time, total_steps, secs, secs > 0 ? (double)total_steps * s.p.n / secs : 0.0,
+           s.time, total_steps, secs, secs > 0 ? particle_steps / secs : 0.0,
            s.nlist.builds, s.nlist.sorts, dem_system_kinetic_energy(&s));
     printf("neighbour list: %.2f pairs per particle (skin %g m)\n", s.p.n ? (double)s.nlist.npairs / s.p.n : 0.0, s.nlist.skin);
     if (s.bodies.n)   /* each body's is in the snapshots */
