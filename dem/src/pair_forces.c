@@ -32,7 +32,7 @@ static ALWAYS_INLINE void pair_loop(dem_system *s, const int normal, const int t
     double *restrict hist = nl->history;
     unsigned char *restrict was_touching = nl->touching;
     const int hs = tangential_history_size(tangential) + rolling_history_size(rolling) + normal_history_size(normal) +
-                   surface_history_size(surface);
+                   surface_history_size(surface) + cohesion_history_size(cohesion);   /* = s->history_size */
     const int needs_radius = contact_needs_radius(normal, cohesion, surface);
     const double reach = normal_has_reach(normal) ? s->contact_reach : 0.0;
     const dem_contact_models models_copy = s->models;   /* a local copy: no store in the loop can alias it */

@@ -85,6 +85,7 @@ SLOT_QUERY(normal_history_size, NORMAL_MODELS, HISTORY)
 SLOT_QUERY(tangential_history_size, TANGENTIAL_MODELS, HISTORY)
 SLOT_QUERY(rolling_history_size, ROLLING_MODELS, HISTORY)
 SLOT_QUERY(surface_history_size, SURFACE_MODELS, HISTORY)
+SLOT_QUERY(cohesion_history_size, COHESION_MODELS, HISTORY)
 #undef HISTORY
 #define RADIUS(S, N) case S##_##N: return S##_##N##_model.needs_contact_radius;
 SLOT_QUERY(normal_needs_radius, NORMAL_MODELS, RADIUS)
@@ -103,7 +104,7 @@ static ALWAYS_INLINE int contact_needs_radius(int normal, int cohesion, int surf
 
 /* The forces of one contact, added to the sums of i and j: the force on i to fi, its opposite
  * to fj, the torques on i and j to ti and tj;
- * h: the contact's history, [tangential][rolling][normal][surface]. k->vn is set here (along
+ * h: the contact's history, [tangential][rolling][normal][surface][cohesion]. k->vn is set here (along
  * the normal the forces use). Returns 0, with the history cleared, if the normal model finds no
  * contact (a model with a reach, outside its neck). */
 static ALWAYS_INLINE int contact_evaluate(int normal, int tangential, int cohesion, int rolling, int surface,
@@ -111,7 +112,10 @@ static ALWAYS_INLINE int contact_evaluate(int normal, int tangential, int cohesi
                                           double *restrict h, double fi[3], double fj[3], double ti[3], double tj[3])
 {
     const int h_roll = tangential_history_size(tangential), h_norm = h_roll + rolling_history_size(rolling);
-    const int h_surf = h_norm + normal_history_size(normal), hs = h_surf + surface_history_size(surface);
+    /* the cohesion slot's history last (models.c's order); no cohesion model keeps any yet, but the
+     * stride counts it, so that one that does gets its own doubles and is cleared with the rest */
+    const int h_surf = h_norm + normal_history_size(normal);
+    const int hs = h_surf + surface_history_size(surface) + cohesion_history_size(cohesion);
     const double *en = k->en;
     double en_f[3] = {en[0], en[1], en[2]};   /* the normal the forces use */
     if (surface != surface_default) surface_normal(surface, k, m, h + h_surf, en_f);
