@@ -40,7 +40,7 @@ void cpl_mesh_free(cpl_mesh *m)
 {
     free(m->points); free(m->face_start); free(m->face_points); free(m->owner); free(m->neighbour);
     free(m->cell_centre); free(m->cell_volume); free(m->face_centre); free(m->face_area);
-    free(m->cell_face_start); free(m->cell_faces);
+    free(m->cell_face_start); free(m->cell_faces); free(m->cyclic_partner);
     search_free(m->search);
     memset(m, 0, sizeof *m);
 }
@@ -334,11 +334,13 @@ static int full_search(const cpl_mesh *m, const double x[3])
     return -1;
 }
 
-int cpl_mesh_locate(const cpl_mesh *m, const double x[3], int guess, int *searched)
+int cpl_mesh_locate(const cpl_mesh *m, const double x_in[3], int guess, int *searched)
 {
     const mesh_search *s = m->search;
     if (searched) *searched = 0;
-    if (!s || !isfinite(x[0]) || !isfinite(x[1]) || !isfinite(x[2])) return -1;
+    if (!s || !isfinite(x_in[0]) || !isfinite(x_in[1]) || !isfinite(x_in[2])) return -1;
+    double x[3] = {x_in[0], x_in[1], x_in[2]};
+    if (m->cyclic_partner) cpl_mesh_wrap(m, x);   /* a point beyond a cyclic side is inside, on the other */
     int c = guess;
     for (int step = 0; c >= 0 && c < m->ncells && step < s->walk_cap; step++) {
         /* cross the face whose plane x is furthest outside of; inside all of them: found */

@@ -25,6 +25,13 @@ typedef struct cpl_mesh {
     int *cell_faces;
     double bounds_min[3], bounds_max[3];
     void *search;               /* private: grid of cells for the full search */
+    /* cyclic (translational) patch pairs, cpl_mesh_set_cyclic (cyclic.c): per boundary face the
+     * boundary face it meets across the cycle (-1: none; NULL: no cyclic patches), and per axis
+     * whether the mesh is periodic along it and its period (the bounds' extent) [m] */
+    int *cyclic_partner;        /* nfaces - ninternal_faces entries, indexed f - ninternal_faces */
+    int periodic[3];
+    double period[3];
+    double periodic_min[3];     /* the lower cyclic side's coordinate: positions wrap into [min, min + period) */
 } cpl_mesh;
 
 /* Copy the arrays (the caller keeps its own) and derive the rest. cell_centre / cell_volume may
@@ -46,6 +53,24 @@ int cpl_mesh_locate(const cpl_mesh *m, const double x[3], int guess, int *search
 /* A box mesh of nx x ny x nz hex cells in OpenFOAM's ordering (internal faces first, owner <
  * neighbour, boundary faces after), for tests and for the tutorials' checks. */
 void cpl_mesh_box(cpl_mesh *m, const double lo[3], const double hi[3], int nx, int ny, int nz);
+
+/* Cyclic patches (cyclic.c). A translational cyclic pair, as OpenFOAM's cyclicPolyPatch holds
+ * it: face_a[k] meets face_b[k] (boundary faces, in the patches' order). The translation must be
+ * one and the same for every pair, along a coordinate axis, and equal to the mesh's extent along
+ * it (the domain is periodic there); anything else is a fatal error naming the pair. May be
+ * called once per axis. From then on the particle location wraps positions into the bounds along
+ * that axis, and the void fraction and the interpolation see across the pair's faces as across
+ * an interior face. */
+void cpl_mesh_set_cyclic(cpl_mesh *m, int npairs, const int *face_a, const int *face_b);
+/* x wrapped into [periodic_min, periodic_min + period) along the periodic axes. */
+void cpl_mesh_wrap(const cpl_mesh *m, double x[3]);
+/* The cell across boundary face f through its cyclic partner, and the shift that puts that cell
+ * next to this side: (its coordinates + shift) are where it continues the mesh beyond f; -1 for a
+ * face without a partner. */
+int cpl_mesh_cyclic_cell(const cpl_mesh *m, int f, double shift[3]);
+/* For tests: the boundary faces of a box mesh on its min and max planes along `axis`, paired by
+ * their centres; *a, *b malloc'd. Returns the number of pairs. */
+int cpl_mesh_pair_box_faces(const cpl_mesh *m, int axis, int **a, int **b);
 
 /* Extensions (mesh.c). */
 

@@ -21,7 +21,7 @@ void cpl_vf_free(cpl_voidfraction *vf)
 {
     free(vf->sample); free(vf->vp); free(vf->alpha);
     free(vf->w_start); free(vf->w_cell); free(vf->w);
-    free(vf->mark); free(vf->queue);
+    free(vf->mark); free(vf->queue); free(vf->queue_shift);
     memset(vf, 0, sizeof *vf);
 }
 
@@ -71,6 +71,7 @@ void cpl_vf_init(cpl_voidfraction *vf, const cpl_mesh *m, enum cpl_vf_model mode
     vf->alpha = dem_calloc(m->ncells, sizeof(double));
     vf->mark = dem_calloc(m->ncells, sizeof(unsigned));
     vf->queue = dem_calloc(m->ncells, sizeof(int));
+    vf->queue_shift = dem_calloc(m->ncells, sizeof *vf->queue_shift);
     vf->w_start = dem_calloc(1, sizeof(int));
     for (int c = 0; c < m->ncells; c++) vf->alpha[c] = 1.0;
     cpl_vf_set_samples(vf, 4, 16);
@@ -89,8 +90,9 @@ static void push(cpl_voidfraction *vf, int *nw, int cell, double w)
     (*nw)++;
 }
 
-/* divided: each sample point's share to its own cell; points outside the mesh dropped and the
- * rest renormalised. */
+/* divided: each sample point's share to its own cell; points beyond a cyclic side are located
+ * on the other side (cpl_mesh_locate wraps them), points outside the mesh (beyond a wall)
+ * dropped and the rest renormalised. */
 static void weights_divided(cpl_voidfraction *vf, const cpl_mesh *m, const double x[3], double r, int c, int *nw)
 {
     /* the whole sphere inside the cell (the common case of particles smaller than cells): every
@@ -115,32 +117,48 @@ static void weights_divided(cpl_voidfraction *vf, const cpl_mesh *m, const doubl
 
 /* gaussian: breadth-first through faces from the particle's cell, over cells whose centres are
  * within the cutoff; weights V_c exp(-d^2 / 2 s^2) (the kernel times the cell's volume: the
- * kernel's integral over the cell), normalised over the cells found. */
+ * kernel's integral over the cell), normalised over the cells found. Across a cyclic face the
+ * search goes on in the cells of the other side, each at its centre shifted by the period (the
+ * shift travels with the queue), so the kernel sees the periodic image of the mesh. */
 static void weights_gaussian(cpl_voidfraction *vf, const cpl_mesh *m, const double x[3], double r, int c, int *nw)
 {
     const double s = vf->kernel_width * 2.0 * r, cut = vf->kernel_cutoff * s;
+    for (int d = 0; d < 3; d++)   /* one image of each cell within the cutoff */
+        if (m->periodic[d] && !(2.0 * cut < m->period[d]))
+            dem_fatal("gaussian void fraction: the kernel's reach %g m (kernelCutoff x kernelWidth x d) is more than half "
+                      "the period %g m of the cyclic direction %c: lower kernelCutoff or kernelWidth", cut, m->period[d],
+                      "xyz"[d]);
     if (++vf->stamp == 0) {   /* wrapped: clear the marks */
         memset(vf->mark, 0, vf->ncells * sizeof(unsigned));
         vf->stamp = 1;
     }
     int head = 0, tail = 0;
-    vf->queue[tail++] = c;
+    vf->queue[tail] = c;
+    memset(vf->queue_shift[tail++], 0, sizeof vf->queue_shift[0]);
     vf->mark[c] = vf->stamp;
     const int first = *nw;
     double d2min = INFINITY;
     while (head < tail) {
-        const int a = vf->queue[head++];
+        const int a = vf->queue[head];
+        const double *sa = vf->queue_shift[head++];
         double d2 = 0;
-        for (int d = 0; d < 3; d++) d2 += (m->cell_centre[a][d] - x[d]) * (m->cell_centre[a][d] - x[d]);
+        for (int d = 0; d < 3; d++) d2 += (m->cell_centre[a][d] + sa[d] - x[d]) * (m->cell_centre[a][d] + sa[d] - x[d]);
         if (d2 < d2min) d2min = d2;
         push(vf, nw, a, d2);   /* distance^2 for now, weight below */
         for (int k = m->cell_face_start[a]; k < m->cell_face_start[a + 1]; k++) {
-            const int n = cpl_mesh_other_cell(m, m->cell_faces[k], a);
+            const int f = m->cell_faces[k];
+            double sn[3] = {sa[0], sa[1], sa[2]}, across[3];
+            int n = cpl_mesh_other_cell(m, f, a);
+            if (n < 0 && (n = cpl_mesh_cyclic_cell(m, f, across)) >= 0)
+                for (int d = 0; d < 3; d++) sn[d] += across[d];
             if (n < 0 || vf->mark[n] == vf->stamp) continue;
             vf->mark[n] = vf->stamp;
             double dn2 = 0;
-            for (int d = 0; d < 3; d++) dn2 += (m->cell_centre[n][d] - x[d]) * (m->cell_centre[n][d] - x[d]);
-            if (dn2 <= cut * cut) vf->queue[tail++] = n;
+            for (int d = 0; d < 3; d++) dn2 += (m->cell_centre[n][d] + sn[d] - x[d]) * (m->cell_centre[n][d] + sn[d] - x[d]);
+            if (dn2 <= cut * cut) {
+                vf->queue[tail] = n;
+                memcpy(vf->queue_shift[tail++], sn, sizeof sn);
+            }
         }
     }
     /* relative to the nearest centre, so that a kernel narrow compared with the cells cannot
@@ -178,13 +196,15 @@ int cpl_vf_compute_volumes(cpl_voidfraction *vf, const cpl_mesh *m, int np, cons
     for (int i = 0; i < np; i++) {
         vf->w_start[i] = nw;
         const int guess = cell[i] >= 0 && cell[i] < m->ncells ? cell[i] : -1;
-        const int c = cpl_mesh_locate(m, x[i], guess, NULL);
+        double xi[3] = {x[i][0], x[i][1], x[i][2]};
+        cpl_mesh_wrap(m, xi);   /* the image in the mesh, if a cyclic side was crossed */
+        const int c = cpl_mesh_locate(m, xi, guess, NULL);
         cell[i] = c;
         if (c < 0) { outside++; continue; }
         switch (vf->model) {
         case CPL_VF_CENTRE: push(vf, &nw, c, 1.0); break;
-        case CPL_VF_DIVIDED: weights_divided(vf, m, x[i], r[i], c, &nw); break;
-        case CPL_VF_GAUSSIAN: weights_gaussian(vf, m, x[i], r[i], c, &nw); break;
+        case CPL_VF_DIVIDED: weights_divided(vf, m, xi, r[i], c, &nw); break;
+        case CPL_VF_GAUSSIAN: weights_gaussian(vf, m, xi, r[i], c, &nw); break;
         }
     }
     vf->w_start[np] = nw;

@@ -51,6 +51,7 @@ typedef struct cpl_voidfraction {
     int np_cap, w_cap;
     unsigned *mark, stamp;
     int *queue;
+    double (*queue_shift)[3];   /* gaussian: the periodic shift each queued cell is seen at [m] */
 } cpl_voidfraction;
 
 /* name: "centre", "divided" or "gaussian". Returns 0, or -1 for another name (the caller says

@@ -5,6 +5,7 @@
  * error; forces spread with the same weights; particles outside are counted, not dropped
  * silently; bad input is a fatal error with a message naming it. */
 #include <stdlib.h>
+#include <string.h>
 
 #include "catch_fatal.h"
 #include "harness.h"
@@ -118,6 +119,96 @@ static void shear_only(double x[3], void *ctx)
     (void)ctx;
     x[0] += 0.3 * x[2];
     x[1] += 0.2 * x[0];
+}
+
+/* alpha of one particle at x (radius r) on mesh m with model `model` into alpha[] */
+static void one_particle_alpha(const cpl_mesh *m, int model, const double x[3], double r, double *alpha, double *mapped)
+{
+    cpl_voidfraction vf;
+    cpl_vf_init(&vf, m, (enum cpl_vf_model)model, 0.0);
+    vf.kernel_width = 1.0;   /* gaussian: s = d, several cells, reach 3 s < half the period */
+    int cell = -1, floored;
+    cpl_vf_compute(&vf, m, 1, (const double (*)[3])x, &r, &cell);
+    memcpy(alpha, vf.alpha, (size_t)m->ncells * sizeof *alpha);
+    *mapped = mapped_volume(&vf, m, &floored);
+    cpl_vf_free(&vf);
+}
+
+/* 6. Cyclic sides (issue 21): a channel periodic in x. For a particle near either cyclic face
+ * and one straddling it, each model maps the whole volume (sum (1 - alpha) V = V_p to 1e-12) and
+ * gives the alpha field of the same particle half a period away, shifted by those cells (1e-12);
+ * a centre carried across the face is located in the cell that continues its path. Without the
+ * cyclic pairs the divided and gaussian models put the share beyond the face back into the cells
+ * on this side (what CFDEM does and Lethe fixed in 2023): the field then differs, printed. */
+static void cyclic_sides(void)
+{
+    const double lo[3] = {0, 0, 0}, hi[3] = {1, 0.4, 0.4};
+    cpl_mesh m, plain;
+    cpl_mesh_box(&m, lo, hi, 10, 4, 4);   /* cells 0.1 m */
+    cpl_mesh_box(&plain, lo, hi, 10, 4, 4);
+    int *fa, *fb;
+    const int npairs = cpl_mesh_pair_box_faces(&m, 0, &fa, &fb);
+    cpl_mesh_set_cyclic(&m, npairs, fa, fb);
+    free(fa);
+    free(fb);
+    check_true("cyclic: 16 face pairs, periodic in x with the period 1 m", npairs == 16 && m.periodic[0] &&
+               m.period[0] == 1.0 && !m.periodic[1]);
+    /* the cell half a period on from each cell */
+    int *half = malloc((size_t)m.ncells * sizeof *half);
+    for (int c = 0; c < m.ncells; c++) {
+        double y[3] = {m.cell_centre[c][0] + 0.5, m.cell_centre[c][1], m.cell_centre[c][2]};
+        half[c] = cpl_mesh_locate(&m, y, -1, NULL);
+    }
+    double *a1 = malloc((size_t)m.ncells * sizeof *a1), *a2 = malloc((size_t)m.ncells * sizeof *a2);
+    const double r = 0.05, vp = sphere_volume(r);
+    const double at[3][3] = {{0.02, 0.17, 0.21}, {0.985, 0.23, 0.16}, {0.0, 0.2, 0.2}};
+    const char *where[3] = {"near the min face", "near the max face", "centred on the face"};
+    for (int model = CPL_VF_CENTRE; model <= CPL_VF_GAUSSIAN; model++)
+        for (int k = 0; k < 3; k++) {
+            double mapped, mapped2, mapped_plain;
+            one_particle_alpha(&m, model, at[k], r, a1, &mapped);
+            const double y[3] = {at[k][0] + 0.5, at[k][1], at[k][2]};
+            one_particle_alpha(&m, model, y, r, a2, &mapped2);
+            double worst = 0.0;
+            for (int c = 0; c < m.ncells; c++) worst = fmax(worst, fabs(a1[c] - a2[half[c]]));
+            if (model == CPL_VF_CENTRE && k == 2) {   /* on a face either cell is the centre's: a tie */
+                int beside = 0;
+                for (int c = 0; c < m.ncells; c++)
+                    beside += a1[c] < 1.0 && (m.cell_centre[c][0] < 0.1 || m.cell_centre[c][0] > 0.9);
+                worst = beside == 1 ? 0.0 : 1.0;
+            }
+            one_particle_alpha(&plain, model, at[k], r, a2, &mapped_plain);
+            double fault = 0.0;
+            for (int c = 0; c < m.ncells; c++) fault = fmax(fault, fabs(a1[c] - a2[c]));
+            char what[160];
+            snprintf(what, sizeof what, "cyclic %s, particle %s: sum (1-alpha)V = V_p [m^3], rel. 1e-12", model_name[model],
+                     where[k]);
+            check_rel(what, mapped, vp, 1e-12);
+            if (model == CPL_VF_CENTRE && k == 2)
+                snprintf(what, sizeof what, "cyclic centre, particle %s: all in one cell beside the face", where[k]);
+            else
+                snprintf(what, sizeof what, "cyclic %s, particle %s: alpha as half a period on, 1e-12", model_name[model], where[k]);
+            printf("      largest |alpha - alpha half a period on| %.3g; without the pairs the field differs by up to %.3g\n",
+                   worst, fault);
+            check_true(what, worst <= 1e-12);
+        }
+    /* a centre carried across the max face is found where the path goes on */
+    const double before[3] = {0.995, 0.1, 0.1}, beyond[3] = {1.004, 0.1, 0.1}, wrapped[3] = {0.004, 0.1, 0.1};
+    const int c0 = cpl_mesh_locate(&m, before, -1, NULL);
+    const int c1 = cpl_mesh_locate(&m, beyond, c0, NULL), c2 = cpl_mesh_locate(&m, wrapped, -1, NULL);
+    check_true("cyclic: a centre beyond the max face is located in the first cell of the min side",
+               c1 == c2 && c1 >= 0 && m.cell_centre[c1][0] < 0.1 && m.cell_centre[c0][0] > 0.9);
+    /* a separation that is not the mesh's extent is refused */
+    {
+        int ok, fx[1] = {m.ninternal_faces}, fy[1] = {m.ninternal_faces + 1};
+        cpl_mesh bad;
+        cpl_mesh_box(&bad, lo, hi, 10, 4, 4);
+        STOPS_WITH(ok, cpl_mesh_set_cyclic(&bad, 1, fx, fy), "cyclic patch: the separation");
+        check_true("cyclic: two faces that are not a periodic pair: fatal error", ok);
+    }
+    free(half); free(a1); free(a2);
+    cpl_mesh_free(&m);
+    cpl_mesh_free(&plain);
 }
 
 int main(void)
@@ -279,6 +370,7 @@ int main(void)
         check_true("3 points per shell: fatal error", ok);
         cpl_vf_free(&vf);
     }
+    cyclic_sides();
     cpl_mesh_free(&box);
     return finish("test_voidfraction");
 }
