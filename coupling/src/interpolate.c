@@ -29,9 +29,11 @@ void cpl_interp_free(cpl_interp *ip)
  * centres and the least-squares weight 1/|d|^2. */
 static int lsq_neighbour(const cpl_mesh *m, int c, int k, double d[3], double *w)
 {
-    const int n = cpl_mesh_other_cell(m, m->cell_faces[k], c);
+    double shift[3] = {0.0, 0.0, 0.0};   /* across a cyclic face: the other side's cell, moved next to c */
+    int n = cpl_mesh_other_cell(m, m->cell_faces[k], c);
+    if (n < 0) n = cpl_mesh_cyclic_cell(m, m->cell_faces[k], shift);
     if (n < 0) return -1;
-    for (int i = 0; i < 3; i++) d[i] = m->cell_centre[n][i] - m->cell_centre[c][i];
+    for (int i = 0; i < 3; i++) d[i] = m->cell_centre[n][i] + shift[i] - m->cell_centre[c][i];
     *w = 1.0 / (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
     return n;
 }
@@ -68,6 +70,53 @@ static void lsq_inverse(const cpl_mesh *m, int c, double inv[9])
     for (int i = 0; i < 9; i++) inv[i] /= det;
 }
 
+/* cellPoint at cyclic sides: a point on a cyclic face and the point it meets on the partner face
+ * are one point of the periodic mesh; each takes the cells of both (so the two get one value and
+ * the interpolation is continuous across the side; their distances go to the cells' images). */
+static void cyclic_point_cells(cpl_interp *ip, const cpl_mesh *m)
+{
+    const int np = m->npoints;
+    int *partner = dem_malloc((size_t)np * sizeof(int));
+    for (int q = 0; q < np; q++) partner[q] = -1;
+    for (int f = m->ninternal_faces; f < m->nfaces; f++) {
+        const int g = m->cyclic_partner[f - m->ninternal_faces];
+        if (g < 0) continue;
+        double shift[3];   /* x on g + shift = x on f */
+        for (int d = 0; d < 3; d++) shift[d] = m->face_centre[f][d] - m->face_centre[g][d];
+        for (int e = m->face_start[f]; e < m->face_start[f + 1]; e++) {
+            const int p = m->face_points[e];
+            double best = INFINITY;
+            for (int e2 = m->face_start[g]; e2 < m->face_start[g + 1]; e2++) {
+                const int q = m->face_points[e2];
+                double d2 = 0.0;
+                for (int d = 0; d < 3; d++) d2 += (m->points[q][d] + shift[d] - m->points[p][d]) * (m->points[q][d] + shift[d] - m->points[p][d]);
+                if (d2 < best) { best = d2; partner[p] = q; }
+            }
+        }
+    }
+    int *start = dem_malloc(((size_t)np + 1) * sizeof(int));
+    start[0] = 0;
+    for (int q = 0; q < np; q++) {
+        const int own = ip->pc_start[q + 1] - ip->pc_start[q];
+        const int other = partner[q] >= 0 ? ip->pc_start[partner[q] + 1] - ip->pc_start[partner[q]] : 0;
+        start[q + 1] = start[q] + own + other;
+    }
+    int *cell = dem_malloc((size_t)(start[np] ? start[np] : 1) * sizeof(int));
+    for (int q = 0; q < np; q++) {
+        int n = start[q];
+        for (int k = ip->pc_start[q]; k < ip->pc_start[q + 1]; k++) cell[n++] = ip->pc_cell[k];
+        if (partner[q] >= 0)
+            for (int k = ip->pc_start[partner[q]]; k < ip->pc_start[partner[q] + 1]; k++) cell[n++] = ip->pc_cell[k];
+    }
+    free(ip->pc_start);
+    free(ip->pc_cell);
+    free(ip->pc_w);
+    ip->pc_start = start;
+    ip->pc_cell = cell;
+    ip->pc_w = dem_malloc((size_t)(start[np] ? start[np] : 1) * sizeof(double));
+    free(partner);
+}
+
 /* cellPoint: the cells around each point (through the faces of each cell) and their
  * inverse-distance weights. */
 static void point_cells(cpl_interp *ip, const cpl_mesh *m, int ncomp)
@@ -99,6 +148,7 @@ static void point_cells(cpl_interp *ip, const cpl_mesh *m, int ncomp)
         }
     }
     free(count); free(last);
+    if (m->cyclic_partner) cyclic_point_cells(ip, m);
     /* 1 / ((x_f - x_c).A_f) of each cell's faces (cell_faces order), for the pyramid choice */
     ip->pyramid_inv = dem_malloc((size_t)m->cell_face_start[m->ncells] * sizeof(double));
     for (int c = 0; c < m->ncells; c++)
@@ -109,7 +159,13 @@ static void point_cells(cpl_interp *ip, const cpl_mesh *m, int ncomp)
     for (int q = 0; q < np; q++) {
         double sum = 0.0;
         for (int k = ip->pc_start[q]; k < ip->pc_start[q + 1]; k++) {
-            const double *xc = m->cell_centre[ip->pc_cell[k]], *xp = m->points[q];
+            const double *xp = m->points[q];
+            double xc[3];
+            for (int d = 0; d < 3; d++) xc[d] = m->cell_centre[ip->pc_cell[k]][d];
+            if (m->cyclic_partner) {   /* a cell across a cyclic side: its image nearest the point */
+                for (int d = 0; d < 3; d++)
+                    if (m->periodic[d]) xc[d] -= m->period[d] * nearbyint((xc[d] - xp[d]) / m->period[d]);
+            }
             const double d = sqrt((xc[0] - xp[0]) * (xc[0] - xp[0]) + (xc[1] - xp[1]) * (xc[1] - xp[1]) +
                                   (xc[2] - xp[2]) * (xc[2] - xp[2]));
             ip->pc_w[k] = 1.0 / d;
