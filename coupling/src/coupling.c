@@ -345,6 +345,28 @@ static void setup_particles(coupling *c, const char *case_dir, double t_start)
     c->writer = dem_io_open_writer(base, c->restarted);
 }
 
+/* The particles are periodic exactly where the gas is: a DEM periodic direction has the mesh's
+ * cyclic pair across it, with the same period and sides (else particles would wrap where the gas
+ * meets a wall, or stop at a side the gas flows through). */
+static void check_periodic_sides(const coupling *c)
+{
+    const dem_system *s = &c->s;
+    const cpl_mesh *m = &c->mesh;
+    for (int d = 0; d < 3; d++) {
+        if (s->periodic[d] != m->periodic[d])
+            dem_fatal_at(c->rs.domain_source, "key 'periodic': the particles are %speriodic in %c, but the fluid mesh has "
+                         "%s cyclic patch pair across %c: make both periodic there (demProperties domain periodic, "
+                         "constant/polyMesh/boundary type cyclic) or neither", s->periodic[d] ? "" : "not ", "xyz"[d],
+                         m->periodic[d] ? "a" : "no", "xyz"[d]);
+        if (!s->periodic[d]) continue;
+        const double L = m->period[d], tol = 1e-9 * L;
+        if (fabs(s->period[d] - L) > tol || fabs(s->domain_min[d] - m->periodic_min[d]) > tol)
+            dem_fatal_at(c->rs.domain_source, "key 'min': the particles' periodic side in %c is [%.10g, %.10g] m, the fluid "
+                         "mesh's cyclic sides are at [%.10g, %.10g] m: they must be the same", "xyz"[d], s->domain_min[d],
+                         s->domain_max[d], m->periodic_min[d], m->periodic_min[d] + L);
+    }
+}
+
 int coupling_case_gravity(const char *case_dir, double g[3]) { return dem_case_gravity(case_dir, g); }
 
 coupling *coupling_create(const char *case_dir, cpl_mesh *mesh, double rho_f, double nu_f, double dt_f,
@@ -370,6 +392,7 @@ coupling *coupling_create(const char *case_dir, cpl_mesh *mesh, double rho_f, do
     c->params.mu_f = rho_f * nu_f;
     for (int q = 0; q < 3; q++) c->params.gravity[q] = c->s.gravity[q];
     cpl_force_params_check(&c->params);
+    check_periodic_sides(c);
     cpl_vf_init(&c->vf, &c->mesh, vf_model, alpha_min);
     if (vf_model == CPL_VF_GAUSSIAN) { c->vf.kernel_width = kernel_width; c->vf.kernel_cutoff = kernel_cutoff; }
     if (c->interp_scheme != CPL_INTERP_CELL) {

@@ -780,6 +780,7 @@ void dem_case_read(const char *case_dir, dem_system *s, dem_run_settings *rs, in
     rs->timestep_override = dem_dict_bool_opt(root, "timeStepOverride", 0);
 
     read_domain(root, s);
+    snprintf(rs->domain_source, sizeof rs->domain_source, "%s:%d", rs->dict_path, dem_dict_key_line(root, "domain"));
     read_materials(root, s);
     read_models(root, s);
     read_interactions(root, s);

@@ -12,6 +12,7 @@ typedef struct dem_run_settings {
     double max_expected_velocity;/* [m/s]; < 0: not given, use dem_case_default_max_velocity */
     int timestep_override;
     char timestep_source[4200];  /* "file:line" of timeStep, for messages */
+    char domain_source[4200];    /* "file:line" of the domain entry (the coupling checks its periodic sides) */
 } dem_run_settings;
 
 /* Read <case_dir>/constant/demProperties and set up s (materials, models, walls, domain, and,

@@ -5,6 +5,7 @@
 #include "demCoupling.H"
 #include "fvc.H"
 #include "Pstream.H"
+#include "cyclicPolyPatch.H"
 
 #include <cstdlib>
 #include <type_traits>
@@ -153,6 +154,33 @@ Foam::demCoupling::demCoupling
     Info<< "demCoupling: mesh copied to the coupling layer: " << pts.size() << " points, "
         << nFaces << " faces (" << nei.size() << " internal), " << mesh.nCells()
         << " cells" << nl;
+
+    // Cyclic patches: OpenFOAM pairs face i of a cyclic patch with face i of its neighbour
+    // patch; the C side takes the pairs (a translation along one axis, checked there) and sees
+    // across them as across interior faces.
+    forAll(mesh.boundaryMesh(), patchi)
+    {
+        const polyPatch& pp = mesh.boundaryMesh()[patchi];
+        if (!isA<cyclicPolyPatch>(pp)) continue;
+        const cyclicPolyPatch& cpp = refCast<const cyclicPolyPatch>(pp);
+        if (!cpp.owner()) continue;
+        if (!cpp.parallel())
+        {
+            FatalErrorInFunction
+                << "cyclic patch " << cpp.name() << " is rotational: only translational cyclic patches "
+                << "(a periodic box side) are supported" << exit(FatalError);
+        }
+        const cyclicPolyPatch& nbr = cpp.neighbPatch();
+        List<int> a(cpp.size()), b(cpp.size());
+        forAll(cpp, i)
+        {
+            a[i] = cpp.start() + i;
+            b[i] = nbr.start() + i;
+        }
+        cpl_mesh_set_cyclic(m, cpp.size(), a.cdata(), b.cdata());
+        Info<< "demCoupling: cyclic patches " << cpp.name() << " and " << nbr.name() << ": "
+            << cpp.size() << " face pairs" << nl;
+    }
 
     const fileName caseDir(mesh.time().path());
     session_ = coupling_create(caseDir.c_str(), m, rho, nu, deltaT, startTime);
