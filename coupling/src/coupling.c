@@ -423,6 +423,14 @@ coupling *coupling_create(const char *case_dir, cpl_mesh *mesh, double rho_f, do
     return c;
 }
 
+void coupling_set_drive(coupling *c, const double drive[3])
+{
+    for (int q = 0; q < 3; q++) {
+        if (!isfinite(drive[q])) dem_fatal("coupling: the driving pressure gradient %g N/m^3 is not finite", drive[q]);
+        c->params.drive[q] = drive[q];
+    }
+}
+
 void coupling_evolve(coupling *c, const double (*U)[3], const double (*grad_p)[3])
 {
     double t0 = now();

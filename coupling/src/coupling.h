@@ -54,6 +54,9 @@ coupling *coupling_create(const char *case_dir, cpl_mesh *mesh, double rho_f, do
 int coupling_restarted(const coupling *c);
 void coupling_free(coupling *c);
 
+/* The driving pressure gradient of a periodic fluid, -grad p_drive [N/m^3] (particle_forces.h),
+ * for the fluid steps from now on (0 unless set). */
+void coupling_set_drive(coupling *c, const double drive[3]);
 /* U: fluid velocity per cell [m/s]; grad_p: pressure gradient per cell [Pa/m]. */
 void coupling_evolve(coupling *c, const double (*U)[3], const double (*grad_p)[3]);
 

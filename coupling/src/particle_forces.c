@@ -88,8 +88,8 @@ void cpl_fluid_forces_eval(const cpl_force_params *p, const cpl_particle_fluid *
         for (int k = 0; k < 3; k++) {
             out->u_f[i][k] = in->u_f[i][k];
             /* model B: Archimedes, reaction in S; model A: -V_p grad p, reaction in -alpha grad p */
-            out->f_exchange[i][k] = model_b ? -p->rho_f * vp * p->gravity[k] : 0.0;
-            out->f_equation[i][k] = model_b ? 0.0 : -vp * in->grad_p[i][k];
+            out->f_exchange[i][k] = model_b ? -p->rho_f * vp * p->gravity[k] + vp * p->drive[k] : 0.0;
+            out->f_equation[i][k] = model_b ? 0.0 : -vp * in->grad_p[i][k] + vp * p->drive[k];
             if (!implicit) out->f_exchange[i][k] += beta * rel[k];   /* frozen drag */
         }
     }

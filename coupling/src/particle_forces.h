@@ -75,6 +75,12 @@ typedef struct cpl_force_params {
     double rho_f;        /* fluid density [kg/m^3] */
     double mu_f;         /* dynamic viscosity [Pa s] (= rho_f nu_f) */
     double gravity[3];   /* [m/s^2] (model B's buoyancy) */
+    /* A driving pressure gradient imposed on the periodic fluid, -grad p_drive [N/m^3] (not in the
+     * solver's periodic p): each particle feels V_p drive, as it feels -V_p grad p. Model A: in
+     * f_equation (its reaction is in the fluid's -alpha grad p_drive, which the solver adds as
+     * alpha drive); model B: in f_exchange (its reaction goes to S; the solver adds the full drive,
+     * as model B's fluid has the full grad p). Either way the fluid keeps alpha drive of it. */
+    double drive[3];
 } cpl_force_params;
 
 /* A bad parameter is a fatal error naming it (error.h). */

@@ -237,6 +237,12 @@ void Foam::demCoupling::evolve(const volVectorField& U, const volScalarField& p)
 }
 
 
+void Foam::demCoupling::setDrive(const vector& drive)
+{
+    coupling_set_drive(session_, drive.cdata());
+}
+
+
 void Foam::demCoupling::update
 (
     volScalarField& alpha,
@@ -321,6 +327,12 @@ void Foam::demCoupling::particleMeans(vector& v, vector& x) const
     coupling_particle_means(session_, vv, xx);
     v = vector(vv[0], vv[1], vv[2]);
     x = vector(xx[0], xx[1], xx[2]);
+}
+
+
+void Foam::demCoupling::particleForces(vector& fluid, vector& walls) const
+{
+    coupling_particle_forces(session_, fluid.data(), walls.data());
 }
 
 

@@ -104,6 +104,7 @@ Description
 #include "demCoupling.H"
 #include "fluxReconstruction.H"
 #include "heldTraps.H"
+#include "drivingGradient.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -136,6 +137,8 @@ int main(int argc, char *argv[])
     demCoupling coupling(mesh, rhoFluid.value(), nuFluid, runTime.deltaTValue(), runTime.value());
 
     const bool modelA = coupling.modelA();
+    // A periodic pipe's driving gradient (constant/drivingGradient; none without it)
+    drivingGradient driving(mesh, rhoFluid.value(), faceMomentum);
     // c of the pressure term at the faces: alpha_f (model A) or 1 (model B)
     surfaceScalarField pCoeff_f("pCoeff_f", alphaf);
 
@@ -159,7 +162,7 @@ int main(int argc, char *argv[])
     // The fluid's momentum int(alpha U) dV at the last step, and the balance file
     // (momentumBalance.H)
     vector momentumOld(gSum(alpha.primitiveField()*U.primitiveField()*mesh.V().field()));
-    autoPtr<OFstream> momentumFile;
+    autoPtr<OFstream> momentumFile, drivingFile;
 
     // The particles' initial state opens the HDF5/XDMF series (a continued run has it already)
     if (!restarted)
@@ -189,6 +192,10 @@ int main(int argc, char *argv[])
         // --- 1. DEM steps and coupling: alpha, Ksl, Up, fExplicit at the new time
         clock.timeIncrement();
 
+        if (driving.active())
+        {
+            coupling.setDrive(driving.drive());   // the particles feel the gas's driving gradient
+        }
         coupling.evolve(U, p);
         coupling.update(alpha, Ksl, Up, fExplicit);
         if (stepi == 1 && !haveInitialAlpha)
@@ -235,6 +242,11 @@ int main(int argc, char *argv[])
         }
 
         particleSource = Ksl*(Up - U) + fExplicit;
+        if (driving.active())
+        {
+            Info<< "Driving gradient " << driving.gradient() << " Pa/m: mean superficial velocity "
+                << driving.superficialVelocity() << " m/s" << nl;
+        }
 
         fluidTime += clock.timeIncrement();
 
@@ -246,6 +258,7 @@ int main(int argc, char *argv[])
             coupling.write(runTime.value());
         }
         runTime.write();
+        driving.write();
 
         {
             vector vp, xp;

@@ -115,7 +115,7 @@ static void balance(void)
         for (int model = CPL_MODEL_A; model <= CPL_MODEL_B; model++)
             for (int mode = CPL_EXCHANGE_IMPLICIT; mode <= CPL_EXCHANGE_EXPLICIT; mode++) {
                 const cpl_force_params prm = {(enum cpl_model_type)model, (enum cpl_drag_law)law,
-                                              (enum cpl_exchange_mode)mode, rho_f, mu_f, {G[0], G[1], G[2]}};
+                                              (enum cpl_exchange_mode)mode, rho_f, mu_f, {G[0], G[1], G[2]}, {0, 0, 0}};
                 cpl_force_params_check(&prm);   /* valid, or the test stops here */
                 cpl_fluid_forces_eval(&prm, &in, &f);
                 cpl_exchange_cells(&s.w, &f, (const double(*)[3])s.v, NCELLS, s.cell_volume, ksl, up, src);
@@ -182,7 +182,7 @@ static void balance(void)
     const int i = 1;
     const double slip = sqrt(pow(s.u_f[i][0] - s.v[i][0], 2) + pow(s.u_f[i][1] - s.v[i][1], 2) + pow(s.u_f[i][2] - s.v[i][2], 2));
     const double beta_p = cpl_drag_koch_hill(rho_f, mu_f, s.d[i], s.alpha[i], slip);
-    cpl_force_params pa = {CPL_MODEL_A, CPL_DRAG_KOCH_HILL, CPL_EXCHANGE_IMPLICIT, rho_f, mu_f, {G[0], G[1], G[2]}};
+    cpl_force_params pa = {CPL_MODEL_A, CPL_DRAG_KOCH_HILL, CPL_EXCHANGE_IMPLICIT, rho_f, mu_f, {G[0], G[1], G[2]}, {0, 0, 0}};
     cpl_fluid_forces_eval(&pa, &in, &f);
     check_rel("model A: beta = beta_p", f.beta[i], beta_p, 1e-15);
     check_rel("model A: f_equation = -V_p grad p (x)", f.f_equation[i][0], -s.volume[i] * s.grad_p[i][0], 1e-15);
@@ -190,6 +190,16 @@ static void balance(void)
     cpl_fluid_forces_eval(&pa, &in, &f);
     check_rel("model B: beta = beta_p / alpha", f.beta[i], beta_p / s.alpha[i], 1e-15);
     check_rel("model B: f_exchange = -rho_f V_p g (z)", f.f_exchange[i][2], -rho_f * s.volume[i] * G[2], 1e-15);
+    /* a driving gradient (issue 21): the particle feels V_p drive, model A in f_equation (its
+     * reaction in the fluid's -alpha grad p_drive), model B in f_exchange (its reaction in S) */
+    const double drive[3] = {1234.5, 0.0, 0.0};   /* -grad p_drive [N/m^3] */
+    for (int q = 0; q < 3; q++) pa.drive[q] = drive[q];
+    cpl_fluid_forces_eval(&pa, &in, &f);
+    check_rel("model B with a drive: f_exchange = V_p drive (x)", f.f_exchange[i][0], s.volume[i] * drive[0], 1e-15);
+    pa.model = CPL_MODEL_A;
+    cpl_fluid_forces_eval(&pa, &in, &f);
+    check_rel("model A with a drive: f_equation = -V_p grad p + V_p drive (x)", f.f_equation[i][0],
+              -s.volume[i] * s.grad_p[i][0] + s.volume[i] * drive[0], 1e-15);
     cpl_fluid_forces_free(&f);
 }
 
@@ -202,7 +212,7 @@ static void lone_particle(void)
     const double d[1] = {1e-3}, vp[1] = {M_PI / 6.0 * 1e-9}, alpha[1] = {0.7};
     const cpl_cell_weights w = {1, start, cell, weight};
     const cpl_particle_fluid in = {1, v, d, vp, u_f, gp, alpha, NULL};
-    const cpl_force_params prm = {CPL_MODEL_B, CPL_DRAG_DI_FELICE, CPL_EXCHANGE_IMPLICIT, 1000.0, 1e-3, {0, 0, -9.81}};
+    const cpl_force_params prm = {CPL_MODEL_B, CPL_DRAG_DI_FELICE, CPL_EXCHANGE_IMPLICIT, 1000.0, 1e-3, {0, 0, -9.81}, {0, 0, 0}};
     cpl_fluid_forces f;
     cpl_fluid_forces_init(&f);
     cpl_fluid_forces_eval(&prm, &in, &f);
@@ -227,7 +237,7 @@ static void static_column(void)
                     const double alpha[1] = {a ? 1.0 : 0.6};
                     const cpl_particle_fluid in = {1, zero, d, vp, zero, gp, alpha, NULL};
                     const cpl_force_params prm = {(enum cpl_model_type)model, (enum cpl_drag_law)law,
-                                                  (enum cpl_exchange_mode)mode, rho_f, mu_f, {G[0], G[1], G[2]}};
+                                                  (enum cpl_exchange_mode)mode, rho_f, mu_f, {G[0], G[1], G[2]}, {0, 0, 0}};
                     cpl_fluid_forces f;
                     cpl_fluid_forces_init(&f);
                     cpl_fluid_forces_eval(&prm, &in, &f);
@@ -247,7 +257,7 @@ static void settling(void)
     const double vp = M_PI / 6.0 * d * d * d, m = rho_p * vp;
     for (int model = CPL_MODEL_A; model <= CPL_MODEL_B; model++) {
         const cpl_force_params prm = {(enum cpl_model_type)model, CPL_DRAG_SCHILLER_NAUMANN, CPL_EXCHANGE_IMPLICIT,
-                                      rho_f, rho_f * nu, {G[0], G[1], G[2]}};
+                                      rho_f, rho_f * nu, {G[0], G[1], G[2]}, {0, 0, 0}};
         const double u_f[1][3] = {{0, 0, 0}}, gp[1][3] = {{0, 0, rho_f * G[2]}}, dd[1] = {d}, vv[1] = {vp}, alpha[1] = {1.0};
         cpl_fluid_forces f;
         cpl_fluid_forces_init(&f);
