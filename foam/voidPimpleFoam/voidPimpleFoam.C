@@ -101,6 +101,7 @@ Description
 #include "wallFvPatch.H"
 #include "fixedFluxPressureFvPatchScalarField.H"
 
+#include "phaseTurbulence.H"
 #include "demCoupling.H"
 #include "fluxReconstruction.H"
 #include "heldTraps.H"
@@ -238,6 +239,10 @@ int main(int argc, char *argv[])
             if (pimple.turbCorr())
             {
                 laminarTransport.correct();
+                if (turbulence.valid())
+                {
+                    turbulence->correct();
+                }
             }
         }
 
