@@ -5,7 +5,7 @@ Application
 Description
     Transient solver for the volume-averaged incompressible flow of a Newtonian fluid through
     DEM particles (CFD-DEM, unresolved): void-fraction-weighted continuity and momentum,
-    PIMPLE, laminar. The particles (dem/), the void fraction, the exchange coefficient and the
+    PIMPLE, laminar or with OpenFOAM's turbulence models. The particles (dem/), the void fraction, the exchange coefficient and the
     particle sources come from the C coupling layer (coupling/src/coupling.h) through the
     demCoupling adapter (foam/adapter).
 
@@ -80,6 +80,13 @@ Description
                                      div(((alpha*nuEff)*dev2(T(grad(U))))) (the name DPMFoam uses)
       system/fvSolution              PIMPLE { nOuterCorrectors; nCorrectors;
                                      nNonOrthogonalCorrectors; pRefCell; pRefValue; }
+
+      constant/turbulenceProperties  optional: OpenFOAM's incompressible turbulence models,
+                                     phase-weighted as DPMFoam's (phaseTurbulence.H), with
+                                     their fields in 0/ (k, epsilon or omega, nut); without
+                                     it the gas is laminar
+      constant/drivingGradient       optional: a periodic pipe's driving gradient, holding the
+                                     mean superficial velocity (drivingGradient.H)
 
     Serial only (the C layer holds the whole mesh and all particles).
 
