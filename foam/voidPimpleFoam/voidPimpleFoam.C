@@ -5,9 +5,9 @@ Application
 Description
     Transient solver for the volume-averaged incompressible flow of a Newtonian fluid through
     DEM particles (CFD-DEM, unresolved): void-fraction-weighted continuity and momentum,
-    PIMPLE, laminar or with OpenFOAM's turbulence models. The particles (dem/), the void fraction, the exchange coefficient and the
-    particle sources come from the C coupling layer (coupling/src/coupling.h) through the
-    demCoupling adapter (foam/adapter).
+    PIMPLE, laminar or with OpenFOAM's turbulence models. The particles (dem/), the void
+    fraction, the exchange coefficient and the particle sources come from the C coupling layer
+    (coupling/src/coupling.h) through the demCoupling adapter (foam/adapter).
 
     Equations (per unit volume of mixture, divided by rho_f; alpha = fluid volume fraction,
     U = interstitial fluid velocity, phi = interstitial face flux, p = KINEMATIC pressure
