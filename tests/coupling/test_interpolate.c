@@ -161,15 +161,8 @@ static double value_at(const cpl_interp *ip, const cpl_mesh *m, const double x_i
  * values on the two sides 2e-9 m apart agree to 1e-7). Without the pairs both differ, printed. */
 static void cyclic_sides(void)
 {
-    const double lo[3] = {0, 0, 0}, hi[3] = {1, 0.4, 0.4};
     cpl_mesh m, plain;
-    cpl_mesh_box(&m, lo, hi, 10, 4, 4);
-    cpl_mesh_box(&plain, lo, hi, 10, 4, 4);
-    int *fa, *fb;
-    const int npairs = cpl_mesh_pair_box_faces(&m, 0, &fa, &fb);
-    cpl_mesh_set_cyclic(&m, npairs, fa, fb);
-    free(fa);
-    free(fb);
+    cyclic_channel(&m, &plain);
     double *field = malloc((size_t)m.ncells * sizeof *field);
     for (int c = 0; c < m.ncells; c++) {
         const double *x = m.cell_centre[c];

@@ -144,13 +144,7 @@ static void cyclic_sides(void)
 {
     const double lo[3] = {0, 0, 0}, hi[3] = {1, 0.4, 0.4};
     cpl_mesh m, plain;
-    cpl_mesh_box(&m, lo, hi, 10, 4, 4);   /* cells 0.1 m */
-    cpl_mesh_box(&plain, lo, hi, 10, 4, 4);
-    int *fa, *fb;
-    const int npairs = cpl_mesh_pair_box_faces(&m, 0, &fa, &fb);
-    cpl_mesh_set_cyclic(&m, npairs, fa, fb);
-    free(fa);
-    free(fb);
+    const int npairs = cyclic_channel(&m, &plain);
     check_true("cyclic: 16 face pairs, periodic in x with the period 1 m", npairs == 16 && m.periodic[0] &&
                m.period[0] == 1.0 && !m.periodic[1]);
     /* the cell half a period on from each cell */
