@@ -41,7 +41,8 @@ static void wrap_and_check_domain(dem_system *s)
             } else if (*xd < s->domain_min[d] - p->radius[i] || *xd > s->domain_max[d] + p->radius[i]) {
                 dem_fatal("particle id %lld left the domain at t = %g s (step %ld): position "
                           "(%g %g %g) m, domain min (%g %g %g) max (%g %g %g) m. Close the domain "
-                          "with walls or make that direction periodic.",
+                          "with walls, make that direction periodic, or let particles leave there "
+                          "through an outlet (outlets { <name> { type plane; ... } }).",
                           (long long)p->id[i], s->time, s->step, p->x[i][0], p->x[i][1], p->x[i][2],
                           s->domain_min[0], s->domain_min[1], s->domain_min[2],
                           s->domain_max[0], s->domain_max[1], s->domain_max[2]);
