@@ -41,23 +41,26 @@ static double mean_particle_volume(const dem_stream *st)
     return M_PI / 6.0 * sum / 20000.0;
 }
 
+/* A number of steps as a long: at most 1e15 (a run is below 1e13 steps: case.c), so that no
+ * quotient of the keys' ranges (1e9 s over 1e-12 s) overflows the conversion */
+static long steps_of(double steps) { return (long)fmin(steps, 1e15); }
+
 void dem_stream_prepare(const dem_system *s, dem_stream *st)
 {
     const double dt = s->dt;
     if (!(dt > 0.0)) dem_fatal("insertion '%s': the time step must be set before the stream", st->ins.name);
     const double vn = dot(st->ins.velocity, st->normal);
     st->mean_volume = mean_particle_volume(st);
-    if (st->interval > 0.0) st->every = (long)fmax(1.0, llround(st->interval / dt));
+    if (st->interval > 0.0) st->every = steps_of(fmax(1.0, nearbyint(st->interval / dt)));
     else if (st->shape != STREAM_REGION)   /* the slab 1.5 of the largest diameter deep */
-        st->every = (long)fmax(1.0, ceil(1.5 * dem_insertion_max_diameter(&st->ins) / (vn * dt)));
+        st->every = steps_of(fmax(1.0, ceil(1.5 * dem_insertion_max_diameter(&st->ins) / (vn * dt))));
     else st->every = 100;
-    st->start_step = (long)fmax(1.0, ceil(st->start_time / dt - 1e-9));
+    st->start_step = steps_of(fmax(1.0, ceil(st->start_time / dt - 1e-9)));
     st->end_step = isfinite(st->end_time) && st->end_time / dt < 1e15 ? (long)floor(st->end_time / dt + 1e-9) : LONG_MAX;
     if (st->shape != STREAM_REGION) st->depth = vn * st->every * dt;
     rng_seed(&st->rng, st->ins.seed);
 }
 
-/* Events on the schedule until endTime, and after it while something is still due (carried over) */
 double dem_stream_largest_rate(const dem_system *s, const dem_stream *st)
 {
     if (st->shape == STREAM_REGION) return INFINITY;
@@ -65,6 +68,7 @@ double dem_stream_largest_rate(const dem_system *s, const dem_stream *st)
     return st->mass_rate > 0.0 ? fits * s->materials.mat[st->ins.material].density : fits / st->mean_volume;
 }
 
+/* Events on the schedule until endTime, and after it while something is still due (carried over) */
 static int event_at(const dem_stream *st, long step)
 {
     const int behind = st->behind_count > 0 || st->behind_mass > 0.0 || st->pending_diameter > 0.0;
