@@ -177,7 +177,7 @@ void dem_bodies_sum_forces(dem_system *s)
     dem_bodies *b = &s->bodies;
     const dem_particles *p = &s->p;
     for (int k = 0; k < b->n; k++) {
-        const double M = template_of(b, k)->mass.mass;
+        const double M = dem_body_mass(b, k);
         for (int d = 0; d < 3; d++) {
             b->f[k][d] = M * s->gravity[d];   /* gravity once, with the body's mass */
             b->torque[k][d] = 0.0;
@@ -199,7 +199,7 @@ void dem_bodies_sum_forces(dem_system *s)
 static void half_kick(dem_bodies *b, double h)
 {
     for (int k = 0; k < b->n; k++) {
-        const double inv_m = 1.0 / template_of(b, k)->mass.mass;
+        const double inv_m = 1.0 / dem_body_mass(b, k);
         const double (*R)[3] = b->R[k], *T = b->torque[k];
         for (int d = 0; d < 3; d++) {
             b->v[k][d] += h * inv_m * b->f[k][d];
@@ -247,7 +247,7 @@ double dem_bodies_kinetic_energy(const dem_system *s)
     double e = 0.0;
     for (int k = 0; k < b->n; k++) {
         const double *v = b->v[k];
-        e += 0.5 * template_of(b, k)->mass.mass * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) + rotational_energy(b, k);
+        e += 0.5 * dem_body_mass(b, k) * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) + rotational_energy(b, k);
     }
     return e;
 }
@@ -315,7 +315,7 @@ void dem_bodies_from_state(dem_system *s, const dem_body_state *st, const char *
         if (p->body[i] < 0 || p->body[i] > b->n)
             dem_fatal("%s: particle id %lld belongs to body %d, but the snapshot has %d bodies", where,
                       (long long)p->id[i], p->body[i] - 1, b->n);
-        give_body_mass(p, i, template_of(b, p->body[i] - 1)->mass.mass);
+        give_body_mass(p, i, dem_body_mass(b, p->body[i] - 1));
     }
 }
 

@@ -53,6 +53,9 @@ typedef struct dem_bodies {
     dem_vec3 *w;                /* angular velocity in space [rad/s], kept with L_b */
 } dem_bodies;
 
+/* Body k's mass [kg] (its template's) */
+static inline double dem_body_mass(const dem_bodies *b, int k) { return b->templates[b->template_of[k]].mass.mass; }
+
 struct dem_system;
 void dem_bodies_free(dem_bodies *b);
 /* A template from its spheres in its own frame; density in kg/m^3; model: union or sphereSum

@@ -7,12 +7,6 @@
 #include "error.h"
 #include "system.h"
 
-double dem_unit_mass(const dem_system *s, int i)
-{
-    const dem_particles *p = &s->p;
-    return p->body[i] ? s->bodies.templates[s->bodies.template_of[p->body[i] - 1]].mass.mass : p->mass[i];
-}
-
 dem_tally dem_lifecycle_held(const dem_system *s)
 {
     const dem_particles *p = &s->p;
@@ -20,7 +14,7 @@ dem_tally dem_lifecycle_held(const dem_system *s)
     for (int i = 0; i < p->n; i++)
         if (!p->body[i]) dem_tally_add(&t, 1, dem_mass_to_quanta(p->mass[i]));
     for (int b = 0; b < s->bodies.n; b++)
-        dem_tally_add(&t, 1, dem_mass_to_quanta(s->bodies.templates[s->bodies.template_of[b]].mass.mass));
+        dem_tally_add(&t, 1, dem_mass_to_quanta(dem_body_mass(&s->bodies, b)));
     return t;
 }
 
@@ -33,7 +27,7 @@ dem_tally dem_system_remove_marked(dem_system *s, const int *mark)
     for (int i = 0; i < p->n; i++)
         if (mark[i] && p->body[i]) body_gone[p->body[i] - 1] = 1;
     for (int k = 0; k < b->n; k++)
-        if (body_gone[k]) dem_tally_add(&gone, 1, dem_mass_to_quanta(b->templates[b->template_of[k]].mass.mass));
+        if (body_gone[k]) dem_tally_add(&gone, 1, dem_mass_to_quanta(dem_body_mass(b, k)));
     /* from the top down: the particle moved into a hole is always one that stays */
     for (int i = p->n - 1; i >= 0; i--) {
         const int body = p->body[i];

@@ -50,8 +50,6 @@ static inline dem_mass_quanta dem_quanta_join(int64_t hi, int64_t lo)
 struct dem_system;
 /* Units (free spheres and bodies) now in the system and their mass. */
 dem_tally dem_lifecycle_held(const struct dem_system *s);
-/* The mass of the unit particle i belongs to [kg] (a body's sphere carries its body's mass). */
-double dem_unit_mass(const struct dem_system *s, int i);
 
 /* Remove the particles i with mark[i] != 0; a mark on any sphere of a body removes the whole
  * body. The lists are stale afterwards (the generation says so) and are remade at the next step.

@@ -44,8 +44,7 @@ void dem_outlets_remove(dem_system *s)
     int *body_out = dem_calloc((size_t)(s->bodies.n ? s->bodies.n : 1), sizeof *body_out);
     for (int b = 0; b < s->bodies.n; b++) {
         body_out[b] = outlet_of(s, s->bodies.x[b]);
-        if (body_out[b]) dem_tally_add(&s->outlets[body_out[b] - 1].removed, 1,
-                                       dem_mass_to_quanta(s->bodies.templates[s->bodies.template_of[b]].mass.mass));
+        if (body_out[b]) dem_tally_add(&s->outlets[body_out[b] - 1].removed, 1, dem_mass_to_quanta(dem_body_mass(&s->bodies, b)));
     }
     for (int i = 0; i < p->n; i++) {
         if (p->body[i]) {
