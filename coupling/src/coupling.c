@@ -73,6 +73,7 @@ struct coupling {
     double wall_force[3];         /* the walls' force on the particles, mean over the last
                                      fluid step's DEM steps [N] */
     double fluid_force[3];        /* the fluid's force on the particles, the same mean [N] */
+    double (*each_wall)[3];       /* each wall's force on the particles, the same mean [N] */
 };
 
 static double now(void)
@@ -244,8 +245,11 @@ static void write_means(coupling *c)
     double v[3], x[3];
     coupling_particle_means(c, v, x);
     const double *fw = c->wall_force, *ff = c->fluid_force;
-    fprintf(c->means, "%.9g %d %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.9g\n", c->s.time, c->s.p.n,
+    fprintf(c->means, "%.9g %d %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.9g", c->s.time, c->s.p.n,
             x[0], x[1], x[2], v[0], v[1], v[2], fw[0], fw[1], fw[2], ff[0], ff[1], ff[2]);
+    for (int w = 0; w < c->s.nwalls; w++)
+        fprintf(c->means, " %.9g %.9g %.9g", c->each_wall[w][0], c->each_wall[w][1], c->each_wall[w][2]);
+    fputc('\n', c->means);
     fflush(c->means);
 }
 
@@ -301,6 +305,11 @@ static void open_means(coupling *c, const char *path)
     c->means = fopen(path, "w");
     if (!c->means) dem_fatal("coupling: cannot write %s", path);
     fputs(header, c->means);
+    if (c->s.nwalls) {   /* a section's wall (a bounded cylinder, a plane) measured on its own */
+        fputs("# then each wall's force on the particles x y z [N], the same mean:", c->means);
+        for (int w = 0; w < c->s.nwalls; w++) fprintf(c->means, " %s", c->s.walls[w].name);
+        fputc('\n', c->means);
+    }
     if (nkept) fputs(kept, c->means);
     free(kept);
     if (!nkept) write_means(c);
@@ -414,6 +423,7 @@ coupling *coupling_create(const char *case_dir, cpl_mesh *mesh, double rho_f, do
     snprintf(cmd, sizeof cmd, "mkdir -p '%s'", path);
     if (system(cmd) != 0) dem_fatal("coupling: cannot create %s", path);
     snprintf(path, sizeof path, "%s/postProcessing/particles.dat", case_dir);
+    c->each_wall = dem_calloc((size_t)c->s.nwalls + 1, sizeof *c->each_wall);
     open_means(c, path);
     dem_info("coupling: %d particles, %d fluid cells; %d DEM steps of %g s per fluid step; void fraction %s "
              "(alphaMin %g), drag %s, model %s, %s exchange, %s interpolation",
@@ -439,16 +449,21 @@ void coupling_evolve(coupling *c, const double (*U)[3], const double (*grad_p)[3
     double t1 = now();
     c->coupling_seconds += t1 - t0;
     double fw[3] = {0.0, 0.0, 0.0}, ff[3] = {0.0, 0.0, 0.0};
+    for (int w = 0; w < c->s.nwalls; w++) c->each_wall[w][0] = c->each_wall[w][1] = c->each_wall[w][2] = 0.0;
     for (int k = 0; k < c->interval; k++) {            /* 2 */
         apply_fluid_forces(c);   /* implicit: at the current velocity; explicit: frozen (beta 0) */
         dem_system_step(&c->s);
         for (int q = 0; q < 3; q++) fw[q] += c->s.wall_force[q];
+        for (int w = 0; w < c->s.nwalls; w++)
+            for (int q = 0; q < 3; q++) c->each_wall[w][q] += c->s.wall_lists[w].force[q];
         add_fluid_force(c, ff);
     }
     for (int q = 0; q < 3; q++) {
         c->wall_force[q] = fw[q] / c->interval;
         c->fluid_force[q] = ff[q] / c->interval;
     }
+    for (int w = 0; w < c->s.nwalls; w++)
+        for (int q = 0; q < 3; q++) c->each_wall[w][q] /= c->interval;
     dem_system_check_health(&c->s);
     double t2 = now();
     c->dem_seconds += t2 - t1;
@@ -509,10 +524,11 @@ void coupling_write(coupling *c, double time)
 
 int coupling_restarted(const coupling *c) { return c->restarted; }
 
-void coupling_timings(const coupling *c, double *dem_s, double *coupling_s)
+void coupling_timings(const coupling *c, double *dem_s, double *coupling_s, double *lifecycle_s)
 {
     *dem_s = c->dem_seconds;
     *coupling_s = c->coupling_seconds;
+    *lifecycle_s = c->s.lifecycle_seconds;
 }
 
 void coupling_free(coupling *c)
@@ -521,6 +537,7 @@ void coupling_free(coupling *c)
     dem_info("coupling: wall time DEM %.2f s, coupling %.2f s", c->dem_seconds, c->coupling_seconds);
     dem_io_close_writer(c->writer);
     if (c->means) fclose(c->means);
+    free(c->each_wall);
     cpl_fluid_forces_free(&c->forces);
     if (c->interp_scheme != CPL_INTERP_CELL) cpl_interp_free(&c->interp);
     free(c->ugp); free(c->ugp_p); free(c->tets);

@@ -74,8 +74,9 @@ void coupling_particle_means(const coupling *c, double v[3], double x[3]);
 void coupling_particle_forces(const coupling *c, double fluid[3], double walls[3]);
 
 void coupling_write(coupling *c, double time);
-/* Wall seconds spent so far in the DEM and in the coupling layer. */
-void coupling_timings(const coupling *c, double *dem_s, double *coupling_s);
+/* Wall seconds spent so far in the DEM and in the coupling layer; lifecycle_s: the part of dem_s
+ * spent in outlets and streams (removal, insertion and the list rebuilds they cause). */
+void coupling_timings(const coupling *c, double *dem_s, double *coupling_s, double *lifecycle_s);
 
 #ifdef __cplusplus
 }

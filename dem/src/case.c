@@ -357,7 +357,8 @@ static void read_walls(const dem_dict *root, dem_system *s)
 }
 
 /* outlets { <name> { type plane; point (x y z); normal (nx ny nz); } <name> { type box; min; max; } }:
- * a plane removes the centres beyond it (the normal points out of the domain), a box those inside. */
+ * a plane removes the centres beyond it (the normal points out of the domain), a box those inside;
+ * optional `interval` [s]: it acts only in the steps that are multiples of interval / timeStep. */
 static void read_outlets(const dem_dict *root, dem_system *s)
 {
     const dem_dict *d = dem_dict_sub_opt(root, "outlets");
@@ -381,6 +382,9 @@ static void read_outlets(const dem_dict *root, dem_system *s)
             for (int k = 0; k < 3; k++)
                 if (!(o->max[k] > o->min[k])) dem_dict_fatal(e, "max", "max must exceed min in every direction");
         }
+        const double interval = dem_dict_scalar_opt(e, "interval", s->dt, s->dt, 1e9);
+        const double steps = fmin(floor(interval / s->dt + 0.5), 1e15);   /* as the streams' counts */
+        o->every = steps < 1.0 ? 1 : (long)steps;
     }
 }
 

@@ -45,12 +45,12 @@ dem_tally dem_system_remove_marked(dem_system *s, const int *mark)
 
 int dem_lifecycle_due(const dem_system *s)
 {
-    return (s->nstreams && dem_streams_due(s, s->step + 1)) || (s->noutlets && dem_outlets_any(s));
+    return (s->nstreams && dem_streams_due(s, s->step + 1)) || (s->noutlets && dem_outlets_any(s, s->step + 1));
 }
 
 void dem_lifecycle_apply(dem_system *s)
 {
-    if (s->noutlets) dem_outlets_remove(s);
+    if (s->noutlets) dem_outlets_remove(s, s->step + 1);
     if (s->nstreams) dem_streams_insert(s, s->step + 1);
 }
 

@@ -71,7 +71,7 @@ enum { PF_WRITE = 1, PF_RESTART = 2, PF_MIGRATE = 4 };
      * explicit) and f_fluid (the exchanged part that does not depend on v) as the fluid        \
      * received them, u_fluid and f_pgrad (model A's -V_p grad p) from the current field */    \
     X(beta,        double, "kg/s",     "drag_coefficient", PF_RESTART | PF_MIGRATE)              \
-    X(u_fluid,     dem_vec3,   "m/s",      "fluid_velocity",  PF_MIGRATE)                            \
+    X(u_fluid,     dem_vec3,   "m/s",      "fluid_velocity",  PF_WRITE | PF_MIGRATE)                 \
     X(f_fluid,     dem_vec3,   "N",        "fluid_force_fixed", PF_RESTART | PF_MIGRATE)             \
     X(f_pgrad,     dem_vec3,   "N",        "pressure_gradient_force", PF_MIGRATE)
 

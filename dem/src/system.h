@@ -52,6 +52,7 @@ typedef struct dem_system {
     long step;
     double max_overlap_fraction;      /* stop above this overlap / smaller radius */
     double max_overlap_seen;          /* largest overlap / smaller radius in the last step */
+    double lifecycle_seconds;         /* wall time in outlets and streams and the list rebuilds they cause [s] */
     double wall_force[3];             /* the walls' total force on the particles in the last step [N] */
     int64_t next_id;
 } dem_system;

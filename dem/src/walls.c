@@ -173,6 +173,7 @@ static ALWAYS_INLINE void wall_loop(dem_system *s, const int normal, const int t
         const dem_wall *wl = &s->walls[q];
         dem_wall_contacts *wc = &s->wall_lists[q];
         const int moving = translates(wl) || (wl->kind == WALL_CYLINDER && wl->angular_velocity != 0.0);
+        double fq[3] = {0.0, 0.0, 0.0};   /* this wall's */
         for (int m = 0; m < wc->n; m++) {
             const int i = wc->particle[m];
             double *h = wc->history + (size_t)m * hs;
@@ -220,8 +221,12 @@ static ALWAYS_INLINE void wall_loop(dem_system *s, const int normal, const int t
             if (surface != surface_default) surface_wall_guard(surface, &s->models, k.en, fc, p->v[i]);
             for (int d = 0; d < 3; d++) {
                 p->f[i][d] += fc[d];
-                fw[d] += fc[d];
+                fq[d] += fc[d];
             }
+        }
+        for (int d = 0; d < 3; d++) {
+            wc->force[d] = fq[d];
+            fw[d] += fq[d];
         }
     }
     s->max_overlap_seen = fmax(s->max_overlap_seen, max_overlap);

@@ -41,6 +41,7 @@ typedef struct dem_wall_contacts {
     int *particle;               /* particle indices */
     double *history;             /* history_size doubles per candidate */
     unsigned char *touching;     /* in contact at the last force computation */
+    double force[3];             /* this wall's force on the particles in the last step [N] */
 } dem_wall_contacts;
 
 struct dem_system;

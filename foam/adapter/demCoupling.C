@@ -336,12 +336,13 @@ void Foam::demCoupling::particleForces(vector& fluid, vector& walls) const
 }
 
 
-void Foam::demCoupling::timings(scalar& demTime, scalar& couplingTime) const
+void Foam::demCoupling::timings(scalar& demTime, scalar& couplingTime, scalar& lifecycleTime) const
 {
-    double dem = 0, cpl = 0;
-    coupling_timings(session_, &dem, &cpl);
+    double dem = 0, cpl = 0, life = 0;
+    coupling_timings(session_, &dem, &cpl, &life);
     demTime = dem;
     couplingTime = cpl + adapterTime_;
+    lifecycleTime = life;
 }
 
 

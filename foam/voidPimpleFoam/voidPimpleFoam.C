@@ -170,7 +170,7 @@ int main(int argc, char *argv[])
     // The fluid's momentum int(alpha U) dV at the last step, and the balance file
     // (momentumBalance.H)
     vector momentumOld(gSum(alpha.primitiveField()*U.primitiveField()*mesh.V().field()));
-    autoPtr<OFstream> momentumFile, drivingFile;
+    autoPtr<OFstream> momentumFile, drivingFile, wallShearFile;
 
     // The particles' initial state opens the HDF5/XDMF series (a continued run has it already)
     if (!restarted)
@@ -275,8 +275,8 @@ int main(int argc, char *argv[])
         {
             vector vp, xp;
             coupling.particleMeans(vp, xp);
-            scalar demT, cplT;
-            coupling.timings(demT, cplT);
+            scalar demT, cplT, lifeT;
+            coupling.timings(demT, cplT, lifeT);
             Info<< "Particles: " << coupling.nParticles()
                 << ", mean velocity " << vp << " m/s, mean position " << xp << " m" << nl
                 << "alpha: min " << gMin(alpha.primitiveField())
@@ -302,12 +302,13 @@ int main(int argc, char *argv[])
     }
 
     {
-        scalar demT, cplT;
-        coupling.timings(demT, cplT);
+        scalar demT, cplT, lifeT;
+        coupling.timings(demT, cplT, lifeT);
         const scalar total = max(wallClock.elapsedTime(), SMALL);
         Info<< nl << "Time split over " << stepi << " fluid steps ("
             << stepi*coupling.interval() << " DEM steps):" << nl
             << "    DEM       " << demT << " s (" << 100*demT/total << " %)" << nl
+            << "      of which insertion/removal " << lifeT << " s (" << 100*lifeT/total << " %)" << nl
             << "    coupling  " << cplT << " s (" << 100*cplT/total << " %)" << nl
             << "    fluid     " << fluidTime << " s (" << 100*fluidTime/total << " %)" << nl
             << "    total     " << total << " s (wall, including start-up and output)" << nl

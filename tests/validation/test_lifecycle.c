@@ -191,8 +191,8 @@ static void body_removed_whole(void)
     dem_system_free(&s);
 }
 
-/* 4. */
-static void outlet_free_flight(void)
+/* 4. every: the outlet acts in the steps that are multiples of it (its `interval`) */
+static void outlet_free_flight(long every)
 {
     dem_system s;
     make_system(&s, 5e7, 0.3, 2500, 0.5, 0.5, normal_hertz, tangential_history, 0.1);
@@ -208,22 +208,27 @@ static void outlet_free_flight(void)
     o->kind = OUTLET_PLANE;
     o->point[0] = L;
     o->normal[0] = 1.0;
+    o->every = every;
     dem_system_setup(&s);
     const double m = s.p.mass[0];
     long worst = 0;
     int closes = 1;
     for (int k = 1; k <= 8000; k++) {
         dem_system_step(&s);
-        long expected = 0;   /* the step whose drift carried it across removed it */
+        long expected = 0;   /* the step whose drift carried it across removed it, or the next multiple of `every` */
+        const int last = (int)(k / every * every);   /* the last step in which the outlet acted */
         for (int i = 0; i < n; i++) {
             double x = x0[i];
-            for (int q = 0; q < k; q++) x += s.dt * v;
+            for (int q = 0; q < last; q++) x += s.dt * v;
             expected += x > L;
         }
         worst = labs(expected - (long)s.outlets[0].removed.count) > worst ? labs(expected - (long)s.outlets[0].removed.count) : worst;
         closes &= balance_closes(&s);
     }
-    check_true("outlet: removed at every step exactly the particles past it", worst == 0);
+    char what[160];
+    snprintf(what, sizeof what, "outlet acting every %ld steps: removed exactly the particles past it in its steps, "
+             "none in between", every);
+    check_true(what, worst == 0);
     check_true("outlet: all 50 gone, their mass counted exactly", s.p.n == 0 && s.outlets[0].removed.count == n &&
                s.outlets[0].removed.mass == n * dem_mass_to_quanta(m));
     check_true("outlet: the balance closed at every step", closes);
@@ -418,6 +423,8 @@ static void bad_input(void)
                    "demProperties:7: key 'normal': the normal must not be zero");
     bad_input_case("bad input: an outlet of no known type", "type plane; point", "type hole; point",
                    "demProperties:7: key 'type': unknown option 'hole'");
+    bad_input_case("bad input: an outlet interval shorter than the step", "normal (0 0 1); } }",
+                   "normal (0 0 1); interval 1e-9; } }", "demProperties:7: key 'interval'");
 }
 
 int main(void)
@@ -426,7 +433,8 @@ int main(void)
     removal_keeps_contacts(20);
     one_out_one_in();
     body_removed_whole();
-    outlet_free_flight();
+    outlet_free_flight(1);
+    outlet_free_flight(37);
     stream_rates();
     stream_carries_over();
     bad_input();
