@@ -5,7 +5,8 @@ One run (postProcess.py <case> [t_stats], t_stats default 0.3 s) reads:
   particles.h5: the snapshots (every writeInterval) with the life cycle's counters (the mass fed
       by the stream and taken by each outlet, exact to 2^-64 kg) and each bead's fluid velocity;
   postProcessing/pLow|pHigh/<start>/surfaceFieldValue.dat: the area-mean kinematic pressure on
-      the planes z1 = 0.1 m and z2 = 0.25 m, the ends of the developed section, every step;
+      the planes 0.1025 and 0.2475 m, through the centres of the developed section's (0.1-0.25 m)
+      first and last cell layers, every step;
   postProcessing/gasFlow/<start>/surfaceFieldValue.dat: the gas's volume flow out of the top;
   postProcessing/wallShear.dat: the wall patches' shear force on the gas, every step;
   postProcessing/particles.dat: the walls' force on the beads, per DEM wall, every fluid step;
@@ -20,13 +21,15 @@ FAIL):
       at the section's mean voidage eps: DiFelice with model B, (beta_p(eps, w_t) / eps) w_t =
       (rho_p - rho_f) V_p g, beta_p = (pi/8) mu d eps^(1 - chi) (0.63 sqrt(Re) + 4.8)^2,
       Re = eps rho_f w d / mu (docs/models/drag_difelice.md, forces_modelA_B.md), within 5 %;
-  pressure_gradient: the section's mean -dp/dz = rho_f (p1 - p2) / (z2 - z1) against the weight
+  pressure_gradient: the section's mean -dp/dz = rho_f (p1 - p2) / (0.145 m) against the weight
       and the wall shear of what it holds, per volume of the section V_s:
-        [N_s m g + rho_f g (V_s - N_s V_p) + S_gas + S_beads + (J2 - J1)] / V_s,
+        [N_s m g + rho_f g (V_s - N_s V_p) + S_gas + S_beads + (J2 - J1) + (Jg2 - Jg1)] / V_s,
       N_s the beads in the section, S_gas the gas's shear on wallSection, S_beads the beads'
       wall force on the DEM wall wallSection, J = m_dot sum(v_z^2) / sum(v_z) the beads' momentum
       flux through each end (the sums over a slab 20 mm thick about the plane, m_dot the solids
-      mass flow out: what the beads still accelerate by), within 2 %.
+      mass flow out: what the beads still accelerate by) and the gas's momentum flux out less in
+      (rho_f sum(alpha u_z^2 dA) through each plane, from the written fields: the particles
+      reshape the gas's profile along the section), within 2 %.
   The section's volume V_s = A_mesh (z2 - z1), A_mesh = 8 R^2 sin(pi/8), the 16-sided polygon of
   the O-grid's wall (2.5 % less than pi R^2).
 It writes <case>/summary.txt (the measured figures, one 'key value' per line) and
@@ -54,6 +57,7 @@ sys.path.insert(0, os.path.join(here, "..", "tools"))
 import foamcase as fc  # noqa: E402
 
 Z1, Z2, SLAB = 0.1, 0.25, 0.02
+P1, P2 = 0.1025, 0.2475    # the pressure planes: through the first and last cell layers' centres
 TOL_SOLIDS, TOL_SLIP, TOL_DP = 1.0, 5.0, 2.0
 
 
@@ -124,6 +128,27 @@ def terminal_velocity(par, eps):
     return 0.5 * (lo + hi)
 
 
+def gas_momentum_flux(case, par, t_stats):
+    """The gas's momentum flux out of the section less what enters it [N], the time mean over
+    the write times t >= t_stats: rho_f sum(alpha u_z^2 V / dz) over the two cell layers about
+    each plane (their mean: the flux through the plane between them), from the written alpha and
+    U and the cell centres and volumes (0/C, 0/V, written by Allrun)."""
+    cz = fc.internal_field(os.path.join(case, "0/Cz"))
+    vol = fc.internal_field(os.path.join(case, "0/V"))
+    dz = 0.005
+    def at(plane, alpha, u):
+        near = np.abs(cz - plane) < dz
+        return par["rho_f"] * np.sum(alpha[near] * u[near, 2] ** 2 * vol[near] / dz) / 2.0
+    diffs = []
+    for t, name in fc.time_dirs(case):
+        if t < t_stats - 1e-9 or not os.path.exists(os.path.join(case, name, "alpha")):
+            continue
+        alpha = fc.internal_field(os.path.join(case, name, "alpha"))
+        u = fc.internal_field(os.path.join(case, name, "U"))
+        diffs.append(at(Z2, alpha, u) - at(Z1, alpha, u))
+    return float(np.mean(diffs))
+
+
 def series(case, name):
     a = fc.surface_field_value(case, name, 2)
     return a[:, 0], a[:, 1]
@@ -184,7 +209,7 @@ def one_run(case, t_stats):
     tp1, p1 = series(case, "pLow")
     tp2, p2 = series(case, "pHigh")
     n = min(len(tp1), len(tp2))
-    tp, dpdz = tp1[:n], par["rho_f"] * (p1[:n] - p2[:n]) / (Z2 - Z1)
+    tp, dpdz = tp1[:n], par["rho_f"] * (p1[:n] - p2[:n]) / (P2 - P1)
     wp = tp >= t_stats - 1e-9
     grad = float(dpdz[wp].mean())
     shear = fc.table(os.path.join(case, "postProcessing/wallShear.dat"))
@@ -207,13 +232,15 @@ def one_run(case, t_stats):
     v_lo = np.sum([a for a, b in jlo]) / np.sum([b for a, b in jlo])
     v_hi = np.sum([a for a, b in jhi]) / np.sum([b for a, b in jhi])
     flux = float(out * (v_hi - v_lo))
+    gas_flux = gas_momentum_flux(case, par, t_stats)
     print(f"the beads' flux-weighted velocity at z1 {v_lo:.4f} m/s, at z2 {v_hi:.4f} m/s")
     w_s = n_s * m * par["g"]
     w_g = par["rho_f"] * par["g"] * (vs - n_s * vp)
-    rhs = (w_s + w_g + s_gas + s_beads + flux) / vs
+    rhs = (w_s + w_g + s_gas + s_beads + flux + gas_flux) / vs
     print(f"pressure gradient in the section: -dp/dz {grad:.2f} Pa/m; the section holds (per volume, Pa/m): beads' "
           f"weight {w_s / vs:.2f}, gas's weight {w_g / vs:.2f}, gas's wall shear {s_gas / vs:.2f}, beads' wall force "
-          f"{s_beads / vs:.2f}, beads' momentum flux out - in {flux / vs:.2f}; sum {rhs:.2f}")
+          f"{s_beads / vs:.2f}, beads' momentum flux out - in {flux / vs:.2f}, gas's momentum flux out - in "
+          f"{gas_flux / vs:.2f}; sum {rhs:.2f}")
     checks.relative("pressure_gradient", grad, rhs, TOL_DP, note="-dp/dz against the weights, the wall shear and "
                     "the beads' momentum flux of the developed section")
 
@@ -226,9 +253,10 @@ def one_run(case, t_stats):
                          ("pressure_gradient_balance", rhs), ("voidage", eps), ("bead_velocity", u_beads),
                          ("slip", slip_mean), ("terminal_velocity", wt), ("solids_out_over_in", out / fed),
                          ("beads_weight", w_s / vs), ("gas_weight", w_g / vs), ("gas_wall_shear", s_gas / vs),
-                         ("beads_wall_force", s_beads / vs), ("beads_momentum_flux", flux / vs)):
+                         ("beads_wall_force", s_beads / vs), ("beads_momentum_flux", flux / vs),
+                         ("gas_momentum_flux", gas_flux / vs)):
             f.write(f"{key} {val:.9g}\n")
-    draw_run(case, par, life, tp, dpdz, t_stats, (w_s, w_g, s_gas, s_beads, flux, grad * vs), wt, slip_mean)
+    draw_run(case, par, life, tp, dpdz, t_stats, (w_s, w_g, s_gas, s_beads, flux + gas_flux, grad * vs), wt, slip_mean)
     return 1 if checks.failed else 0
 
 
@@ -266,7 +294,7 @@ def draw_run(case, par, life, tp, dpdz, t_stats, terms, wt, slip):
     ax.set_ylabel("-dp/dz in the section [Pa/m]")
     ax.set_ylim(0, 2 * max(np.median(dpdz[tp >= t_stats]), 1))
     ax = axes[3]
-    names = ["beads'\nweight", "gas's\nweight", "gas's\nwall shear", "beads'\nwall force", "beads'\nmom. flux"]
+    names = ["beads'\nweight", "gas's\nweight", "gas's\nwall shear", "beads'\nwall force", "mom.\nfluxes"]
     vs = par["A"] * (Z2 - Z1)
     vals = np.array(terms[:5]) / vs
     ax.bar(names, vals, color="tab:blue")
