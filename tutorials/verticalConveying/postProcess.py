@@ -88,6 +88,7 @@ def quanta(hi, lo):
 def lifecycle(case):
     """[(t, fed kg, {outlet: kg}, held kg, exact fed - out - held in quanta)] per snapshot."""
     out = []
+    rho = parameters(case)["rho_p"]
     with h5py.File(os.path.join(case, "particles.h5"), "r") as h:
         groups = [g for g in h["snapshots"].values() if g.attrs.get("complete", 0)]
         groups.sort(key=lambda g: g.attrs["time"])
@@ -101,7 +102,6 @@ def lifecycle(case):
             fed = quanta(b[1], b[2])
             removed = quanta(b[4], b[5])
             r = g["radius"][:]
-            rho = parameters(case)["rho_p"]
             held = float(np.sum(rho * 4.0 / 3.0 * math.pi * r ** 3))
             out.append((float(g.attrs["time"]), fed, outlets, held, fed - removed - held, int(b[0]), int(b[3]), len(r)))
     return out
