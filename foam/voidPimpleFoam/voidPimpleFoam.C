@@ -86,7 +86,7 @@ Description
                                      their fields in 0/ (k, epsilon or omega, nut); without
                                      it the gas is laminar
       constant/drivingGradient       optional: a periodic pipe's driving gradient, holding the
-                                     mean superficial velocity (drivingGradient.H)
+                                     mean superficial or interstitial velocity (drivingGradient.H)
 
     Serial only (the C layer holds the whole mesh and all particles).
 
@@ -257,7 +257,8 @@ int main(int argc, char *argv[])
         if (driving.active())
         {
             Info<< "Driving gradient " << driving.gradient() << " Pa/m: mean superficial velocity "
-                << driving.superficialVelocity() << " m/s" << nl;
+                << driving.superficialVelocity() << " m/s, interstitial " << driving.interstitialVelocity()
+                << " m/s (" << driving.held() << " held)" << nl;
         }
 
         fluidTime += clock.timeIncrement();
