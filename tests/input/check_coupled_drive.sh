@@ -11,7 +11,11 @@
 #      particles' wall forces, within 1 % (the particles feel the driving gradient too:
 #      drivingGradient.H); the gas's balance along the flow within 1 % at every step after the
 #      first 20 ms (the start, a plug flow against no-slip walls, leaves 5 % in the first steps);
-#   3. a continued run starts from the gradient written at its start time.
+#   3. a continued run starts from the gradient written at its start time;
+#   4. with `average interstitial` (as Lethe's flow control) and the 600 spheres: the fluid-volume
+#      mean of U, int(alpha U) dV / int(alpha) dV, held at 0.5 m/s (0.1 %, mean over 0.3-0.6 s), and
+#      the superficial mean = 0.5 m/s x (1 - V_spheres / V) (0.1 %: the void fraction holds the
+#      spheres' volume); a bad `average` is refused with file and key.
 # Usage: check_coupled_drive.sh <voidPimpleFoam> <tutorials/settling>
 solver=$1 src=$2
 export WM_PROJECT_DIR=${OF_DEV_DIR:-/opt/of/OpenFOAM-v1912}
@@ -19,13 +23,13 @@ export WM_PROJECT_DIR=${OF_DEV_DIR:-/opt/of/OpenFOAM-v1912}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
-make_case() {   # dir particles endTime [cells across, default 10]
+make_case() {   # dir particles endTime [cells across, default 10] [average, default superficial]
     cp -r "$src" "$1"
     rm -rf "$1"/log.* "$1"/particles.* "$1"/postProcessing "$1"/[1-9]* "$1"/0.[0-9]*
     cd "$1" || exit 1
-    /usr/bin/python3 - "$2" "$3" "${4:-10}" <<'PY'
+    /usr/bin/python3 - "$2" "$3" "${4:-10}" "${5:-superficial}" <<'PY'
 import re, sys
-n, end, across = int(sys.argv[1]), sys.argv[2], int(sys.argv[3])
+n, end, across, average = int(sys.argv[1]), sys.argv[2], int(sys.argv[3]), sys.argv[4]
 open("system/blockMeshDict", "w").write("""FoamFile { version 2.0; format ascii; class dictionary; object blockMeshDict; }
 convertToMeters 0.001;
 vertices ( (0 -10 -10) (40 -10 -10) (40 10 -10) (0 10 -10) (0 -10 10) (40 -10 10) (40 10 10) (0 10 10) );
@@ -44,8 +48,9 @@ for f, wall in (("0/U", "walls { type noSlip; }"), ("0/p", "walls { type fixedFl
 t = open("constant/transportProperties").read()
 t = re.sub(r"nu\s+(\[[^]]*\])?\s*[0-9.eE+-]+;", "nu              [0 2 -1 0 0 0 0] 1e-3;", t)
 open("constant/transportProperties", "w").write(t)
-open("constant/drivingGradient", "w").write("""FoamFile { version 2.0; format ascii; class dictionary; object drivingGradient; }
-Ubar        (0.5 0 0);   // [m/s] the mean superficial velocity of the gas, along x
+open("constant/drivingGradient", "w").write(f"""FoamFile {{ version 2.0; format ascii; class dictionary; object drivingGradient; }}
+Ubar        (0.5 0 0);   // [m/s] the mean velocity of the gas, along x
+average     {average};
 relaxation  1;
 """)
 open("constant/demProperties", "w").write(f"""FoamFile {{ version 2.0; format ascii; class dictionary; object demProperties; }}
@@ -104,6 +109,21 @@ make_case "$work/split" 600 0.3
 run "$work/split"
 sed -i 's/^endTime .*/endTime         0.6;/' "$work/split/system/controlDict"
 run "$work/split"
+# 4: the interstitial mean held, and a bad `average`
+make_case "$work/interstitial" 600 0.6 10 interstitial
+run "$work/interstitial"
+make_case "$work/badAverage" 0 0.01 10 sideways
+if (cd "$work/badAverage" && "$solver" > log.voidPimpleFoam 2>&1); then
+    echo "CHECK a bad 'average' is refused                                                         FAIL (the run went on)"
+    exit 1
+fi
+if grep -q "constant/drivingGradient" "$work/badAverage/log.voidPimpleFoam" && grep -q "key 'average': sideways" "$work/badAverage/log.voidPimpleFoam"; then
+    echo "CHECK a bad 'average' is refused with file and key                                        PASS"
+else
+    echo "CHECK a bad 'average' is refused with file and key                                        FAIL:"
+    tail -12 "$work/badAverage/log.voidPimpleFoam"
+    exit 1
+fi
 
 /usr/bin/python3 - "$work" <<'PY'
 import sys, numpy as np
@@ -148,6 +168,14 @@ straight = b[b[:, 0] > 0.3 + 1e-9][0]
 print(f"continued at 0.3 s: first step's gradient {first[1]:.17g} Pa/m, the straight run's {straight[1]:.17g} Pa/m")
 check("a continued run goes on from the written gradient (first step as the straight run's, 1e-12)",
       abs(first[1] - straight[1]) <= 1e-12 * abs(straight[1]))
+i = table("interstitial")
+w = i[:, 0] >= 0.3
+held, sup = i[w, 14].mean(), i[w, 2].mean()
+alpha_mean = 1 - 600 * np.pi / 6 * 1.5e-3**3 / (0.04 * 0.02 * 0.02)
+print(f"average interstitial, means over 0.3-0.6 s: interstitial {held:.6g} m/s, superficial {sup:.6g} m/s, "
+      f"0.5 (1 - V_spheres / V) = {0.5 * alpha_mean:.6g} m/s")
+check("interstitial: the fluid-volume mean of U held at 0.5 m/s (0.1 %)", abs(held / 0.5 - 1) < 1e-3)
+check("interstitial: the superficial mean = 0.5 m/s (1 - V_spheres / V) (0.1 %)", abs(sup / (0.5 * alpha_mean) - 1) < 1e-3)
 print("coupled_drive:", "passed" if ok else "FAILED")
 sys.exit(0 if ok else 1)
 PY

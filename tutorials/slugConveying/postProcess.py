@@ -16,7 +16,11 @@ Measured on every snapshot t >= t_stats (the slug's quasi-steady motion):
       across the periodic ends, against time (the rear's slope is printed beside it).
 Checks (CHECK lines; exit 1 on a FAIL):
   slug_velocity: u_slug against Lavrinec et al.'s correlation (Powder Technol. 375, 2020),
-      u_slug = 0.967 u_p + 0.5 sqrt(g D), within 10 %;
+      u_slug = 0.967 u_p + 0.5 sqrt(g D), within 10 %: a relation for the developed slug, so
+      with -short (the first 0.3 s, while the slug still sheds more at its rear than it picks up
+      at its front) it is printed, not checked;
+  held_velocity: the gas's mean velocity that constant/drivingGradient holds (its `average`:
+      superficial or interstitial) at Ubar, within 0.5 %, over the window;
   momentum_balance: the pipe's time-mean balance over the window, rho_f G V = the gas's wall
       shear + the beads' wall forces + the rate of change of the beads' momentum (from the
       first and last snapshots of the window; the gas's is held fixed by the drive), within 1 %;
@@ -28,10 +32,11 @@ Printed beside Lethe's published figures (their example: slug 1.30 m/s, beads in
 Pictures: slugConveying.png (the pipe from the side at six times, beads coloured by axial
 velocity; the solid-fraction map along the pipe against time; the front's position; the
 driving gradient) and slugConveying.gif (the side view, every snapshot).
-Usage: postProcess.py <case> [t_stats]   (t_stats default 2 s)
+Usage: postProcess.py <case> [t_stats] [-short]   (t_stats default 2 s)
 """
 import math
 import os
+import re
 import sys
 
 import matplotlib
@@ -122,6 +127,7 @@ def unwrap(x, period):
 def main():
     case = sys.argv[1] if len(sys.argv) > 1 else "."
     t_stats = float(sys.argv[2]) if len(sys.argv) > 2 else 2.0
+    short = "-short" in sys.argv[3:]
     par = case_parameters(case)
     rows, snaps, mp = measure(case, par)
     checks = fc.Checks()
@@ -150,8 +156,12 @@ def main():
     print(f"  solids mass flow {W:.3f} kg/s; Lethe {LETHE['solids mass flow']} kg/s")
     print(f"  slug length {length:.3f} m (std {rows[ww, 2].std():.3f}); Lethe {LETHE['slug length']} m")
     print(f"  Lavrinec et al. 2020: 0.967 u_p + 0.5 sqrt(g D) = {corr:.3f} m/s")
-    checks.relative("slug_velocity", u_slug, corr, TOL_SLUG,
-                    note="the front's speed against Lavrinec et al.'s correlation at the measured u_p")
+    if short:
+        print(f"  slug velocity {u_slug:.3f} m/s against the correlation's {corr:.3f} m/s: "
+              f"{100 * (u_slug / corr - 1):+.1f} %, not checked: the slug is still forming (the full run checks it)")
+    else:
+        checks.relative("slug_velocity", u_slug, corr, TOL_SLUG,
+                        note="the front's speed against Lavrinec et al.'s correlation at the measured u_p")
 
     b = fc.table(os.path.join(case, "postProcessing/drivingGradient.dat"))
     bw = (b[:, 0] >= t[ww][0] - 1e-9) & (b[:, 0] <= t[ww][-1] + 1e-9)
@@ -165,6 +175,13 @@ def main():
           f"mean gradient {b[bw, 1].mean():.5g} Pa/m, superficial gas velocity {b[bw, 2].mean():.4f} m/s")
     checks.deviation("momentum_balance", abs(imbalance), TOL_BALANCE,
                      note="drive = gas wall shear + beads' wall forces + beads' momentum change, time mean")
+    drive_dict = fc.read_dict(os.path.join(case, "constant/drivingGradient"))
+    ubar = float(np.linalg.norm(fc.vector(drive_dict, "Ubar")))
+    average = re.search(r"\baverage\s+(\w+)\s*;", drive_dict)
+    interstitial = bool(average) and average.group(1) == "interstitial"
+    held = b[bw, 14].mean() if interstitial else b[bw, 2].mean()
+    checks.relative("held_velocity", held, ubar, 0.5, note=f"the gas's mean {'interstitial' if interstitial else 'superficial'}"
+                    f" velocity over the window (constant/drivingGradient; superficial {b[bw, 2].mean():.4f} m/s)")
     counts = rows[:, 1]
     checks.within("particle_count", float(counts.min()), n0, n0, note=f"every snapshot from 0 to {t[-1]:g} s "
                   f"holds {int(counts.max())} at most, {n0} at the start")
