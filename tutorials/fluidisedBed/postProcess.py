@@ -67,7 +67,6 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
-from matplotlib.animation import PillowWriter
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
 import foamcase as fc  # noqa: E402
@@ -254,19 +253,13 @@ def draw(case, snaps, t, dp, t_stats, w_a, mean, t_mb, rel, lo, hi):
     print(f"wrote {out}")
 
     fig, ax = plt.subplots(figsize=(3.2, 6.4))
-    writer = PillowWriter(fps=10)
-    out = os.path.join(case, "fluidisedBed.gif")
-    with writer.saving(fig, out, dpi=80):
-        for snap in snaps:
-            ax.clear()
-            speed_scatter(ax, snap, lo, hi, vmax)
-            ax.set_xlabel("y [mm]", fontsize=8)
-            ax.set_ylabel("z [mm]", fontsize=8)
-            fig.tight_layout()
-            writer.grab_frame()
-    plt.close(fig)
-    print(f"wrote {out} ({len(snaps)} frames)")
 
+    def frame(snap):
+        ax.clear()
+        speed_scatter(ax, snap, lo, hi, vmax)
+        ax.set_xlabel("y [mm]", fontsize=8)
+        ax.set_ylabel("z [mm]", fontsize=8)
+    fc.write_gif(os.path.join(case, "fluidisedBed.gif"), fig, snaps, frame)
 
 if __name__ == "__main__":
     sys.exit(main())

@@ -42,7 +42,6 @@ import sys
 import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
-from matplotlib.animation import PillowWriter
 import numpy as np
 
 here = os.path.dirname(os.path.abspath(__file__))
@@ -243,19 +242,14 @@ def draw(case, par, rows, snaps, b, t_stats, u_slug):
     print(f"wrote {out}")
 
     fig, ax = plt.subplots(figsize=(9, 1.8))
-    out = os.path.join(case, "slugConveying.gif")
-    writer = PillowWriter(fps=10)
-    with writer.saving(fig, out, dpi=80):
-        for t, x, v, _ in snaps:
-            ax.clear()
-            side_view(ax, par, x, v, vmax)
-            ax.set_yticks([])
-            ax.set_title(f"t = {t:.2f} s (colour: axial velocity 0-{vmax} m/s)", fontsize=8)
-            fig.tight_layout()
-            writer.grab_frame()
-    plt.close(fig)
-    print(f"wrote {out} ({len(snaps)} frames)")
 
+    def frame(snap):
+        t, x, v, _ = snap
+        ax.clear()
+        side_view(ax, par, x, v, vmax)
+        ax.set_yticks([])
+        ax.set_title(f"t = {t:.2f} s (colour: axial velocity 0-{vmax} m/s)", fontsize=8)
+    fc.write_gif(os.path.join(case, "slugConveying.gif"), fig, snaps, frame)
 
 if __name__ == "__main__":
     sys.exit(main())

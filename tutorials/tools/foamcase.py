@@ -134,6 +134,22 @@ def snapshot_times(case):
         return sorted(float(g.attrs["time"]) for g in h["snapshots"].values() if g.attrs.get("complete", 0))
 
 
+def write_gif(path, fig, frames, draw, fps=10, dpi=80):
+    """An animation: draw(frame) into fig for each of frames, each grabbed into the GIF at path;
+    prints and returns the frame count. fig is closed after."""
+    import matplotlib.pyplot as plt
+    from matplotlib.animation import PillowWriter
+    writer = PillowWriter(fps=fps)
+    with writer.saving(fig, path, dpi=dpi):
+        for frame in frames:
+            draw(frame)
+            fig.tight_layout()
+            writer.grab_frame()
+    plt.close(fig)
+    print(f"wrote {path} ({len(frames)} frames)")
+    return len(frames)
+
+
 # --- CHECK lines, the same in every tutorial -----------------------------------------------
 class Checks:
     """CHECK lines (name, measured, reference or limits, PASS/FAIL), one per check; `failed` is
