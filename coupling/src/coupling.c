@@ -400,6 +400,7 @@ coupling *coupling_create(const char *case_dir, cpl_mesh *mesh, double rho_f, do
     c->params.rho_f = rho_f;
     c->params.mu_f = rho_f * nu_f;
     for (int q = 0; q < 3; q++) c->params.gravity[q] = c->s.gravity[q];
+    c->params.coarse_graining = c->s.coarse_graining;   /* demProperties' coarseGraining */
     cpl_force_params_check(&c->params);
     check_periodic_sides(c);
     cpl_vf_init(&c->vf, &c->mesh, vf_model, alpha_min);
@@ -430,6 +431,11 @@ coupling *coupling_create(const char *case_dir, cpl_mesh *mesh, double rho_f, do
              c->s.p.n, nc, c->interval, c->s.dt, vf_model == CPL_VF_CENTRE ? "centre" : vf_model == CPL_VF_DIVIDED ? "divided" : "gaussian",
              alpha_min, cpl_drag_law_names[c->params.drag], cpl_model_type_names[c->params.model],
              cpl_exchange_mode_names[c->params.exchange], interp_names_of(c->interp_scheme));
+    if (c->s.coarse_graining > 1.0)
+        dem_info("coupling: coarse graining %g: each parcel's drag is %g times the drag law's for diameter d / %g "
+                 "(Re from d / %g); its volume and mass are those of its %g particles",
+                 c->s.coarse_graining, pow(c->s.coarse_graining, 3), c->s.coarse_graining, c->s.coarse_graining,
+                 pow(c->s.coarse_graining, 3));
     return c;
 }
 

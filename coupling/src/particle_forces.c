@@ -31,6 +31,8 @@ void cpl_force_params_check(const cpl_force_params *p)
         dem_fatal("coupling: fluid dynamic viscosity %g must be positive [Pa s]", p->mu_f);
     for (int k = 0; k < 3; k++)
         if (!isfinite(p->gravity[k])) dem_fatal("coupling: gravity component %c is not finite", "xyz"[k]);
+    if (!(p->coarse_graining == 0.0 || (p->coarse_graining >= 1.0 && p->coarse_graining <= 100.0)))
+        dem_fatal("coupling: coarse-graining factor %g must be in [1, 100] (0: none)", p->coarse_graining);
 }
 
 void cpl_fluid_forces_init(cpl_fluid_forces *f)
@@ -64,6 +66,7 @@ void cpl_fluid_forces_eval(const cpl_force_params *p, const cpl_particle_fluid *
     if (!drag) dem_fatal("coupling: drag law %d is not one of the %d laws", (int)p->drag, CPL_DRAG_COUNT);
     const int model_b = p->model == CPL_MODEL_B;
     const int implicit = p->exchange == CPL_EXCHANGE_IMPLICIT;
+    const double cg = p->coarse_graining > 1.0 ? p->coarse_graining : 1.0, cg3 = cg * cg * cg;
     reserve(out, in->n);
     out->n = in->n;
     for (int i = 0; i < in->n; i++) {
@@ -81,7 +84,8 @@ void cpl_fluid_forces_eval(const cpl_force_params *p, const cpl_particle_fluid *
         double rel[3];
         for (int k = 0; k < 3; k++) rel[k] = in->u_f[i][k] - in->v[i][k];
         const double slip = sqrt(rel[0] * rel[0] + rel[1] * rel[1] + rel[2] * rel[2]);
-        const double beta_p = drag(p->rho_f, p->mu_f, in->d[i], alpha, slip);
+        const double beta_p = cg == 1.0 ? drag(p->rho_f, p->mu_f, in->d[i], alpha, slip)
+                                        : cg3 * drag(p->rho_f, p->mu_f, in->d[i] / cg, alpha, slip);   /* a parcel */
         const double beta = model_b ? beta_p / alpha : beta_p;   /* the shared coefficient */
         const double vp = in->volume[i];
         out->beta[i] = implicit ? beta : 0.0;

@@ -81,6 +81,11 @@ typedef struct cpl_force_params {
      * alpha drive); model B: in f_exchange (its reaction goes to S; the solver adds the full drive,
      * as model B's fluid has the full grad p). Either way the fluid keeps alpha drive of it. */
     double drive[3];
+    /* Coarse graining cg (docs/models/coarse_graining.md): a particle of diameter d is a parcel of
+     * cg^3 primary particles of diameter d / cg, and its drag is theirs, cg^3 beta_p(d / cg), as
+     * CFDEM-PFM's drag models scale it (the drag law's Re from d / cg). Its volume is the parcel's
+     * (cg^3 primary volumes) already. 0 or 1: none (a zeroed struct means none). */
+    double coarse_graining;
 } cpl_force_params;
 
 /* A bad parameter is a fatal error naming it (error.h). */

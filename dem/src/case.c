@@ -189,6 +189,33 @@ static void read_models(const dem_dict *root, dem_system *s)
     }
 }
 
+/* coarseGraining cg [-]: each particle is a parcel of cg^3 primary particles (1: none, the
+ * default). The case's diameters stay the primary particles'; docs/models/coarse_graining.md. */
+static void read_coarse_graining(const dem_dict *root, dem_system *s)
+{
+    s->coarse_graining = dem_dict_scalar_opt(root, "coarseGraining", 1.0, 1.0, 100.0);
+}
+
+/* What does not hold for parcels is refused: a model that says so in its descriptor, and
+ * multisphere bodies (a parcel of clumps has no published scaling here). */
+static void check_coarse_graining(const dem_dict *root, const dem_system *s)
+{
+    const double cg = s->coarse_graining;
+    if (cg == 1.0) return;
+    for (int slot = 0; slot < SLOT_COUNT; slot++) {
+        const dem_contact_model *md = dem_contact_model_get(slot, contact_model_id(&s->models, slot));
+        if (md->coarse_graining_refused)
+            dem_dict_fatal(root, "coarseGraining", "%g: the %s model '%s' does not hold for coarse-grained parcels: %s. "
+                           "Use coarseGraining 1, or a model that holds (docs/models/coarse_graining.md)",
+                           cg, slot_names[slot], md->name, md->coarse_graining_refused);
+    }
+    if (s->bodies.ntemplates > 0)
+        dem_dict_fatal(root, "coarseGraining", "%g: multisphere templates are not coarse-grained here (their spheres "
+                       "and inertia have no parcel rule); use coarseGraining 1", cg);
+    dem_info("coarse graining: every particle is a parcel of cg^3 = %g primary particles (cg = %g); the diameters "
+             "given are the primary particles', the DEM's are %g times larger", cg * cg * cg, cg, cg);
+}
+
 static int material_of(const dem_dict *d, const dem_material_table *t)
 {
     const char *name = dem_dict_word(d, "material");
@@ -388,7 +415,15 @@ static void read_outlets(const dem_dict *root, dem_system *s)
     }
 }
 
-static void read_diameter(const dem_dict *e, dem_insertion *ins)
+/* The diameters of an entry are the primary particles'; the DEM's particles are parcels cg times
+ * as large (coarseGraining), so the sizes are scaled here, once, after their range checks. */
+static void scale_diameters(dem_insertion *ins, double cg)
+{
+    ins->d_value *= cg; ins->d_min *= cg; ins->d_max *= cg; ins->d_mean *= cg; ins->d_std *= cg;
+    for (int k = 0; k < ins->ndiscrete; k++) ins->d_values[k] *= cg;
+}
+
+static void read_diameter(const dem_dict *e, dem_insertion *ins, double cg)
 {
     const dem_dict *d = dem_dict_sub(e, "diameter");
     static const char *const dists[] = {"constant", "uniform", "normal", "discrete", 0};
@@ -418,6 +453,7 @@ static void read_diameter(const dem_dict *e, dem_insertion *ins)
         break;
     }
     }
+    scale_diameters(ins, cg);
 }
 
 static void read_region(const dem_dict *e, dem_insertion *ins)
@@ -608,7 +644,7 @@ static void read_stream(const dem_dict *e, dem_system *s, const dem_insertion *i
     dem_stream *st = dem_streams_add(s);
     st->ins = *ins;
     st->ins.material = particle_material_of(e, &s->materials);
-    read_diameter(e, &st->ins);
+    read_diameter(e, &st->ins, s->coarse_graining);
     st->ins.max_attempts = (int)dem_dict_label_opt(e, "maxAttempts", 50, 1, 100000000);
     const double dmax = dem_insertion_max_diameter(&st->ins);
     if (dem_dict_has(e, "face") == dem_dict_has(e, "region"))
@@ -696,7 +732,7 @@ static void run_insertions(const dem_dict *root, dem_system *s, int insert, cons
             } else {
                 ins.material = dem_dict_has(e, "material") ? particle_material_of(e, &s->materials) : -1;
                 ins.has_diameter = dem_dict_has(e, "diameter");
-                if (ins.has_diameter) read_diameter(e, &ins);
+                if (ins.has_diameter) read_diameter(e, &ins, s->coarse_graining);
             }
         } else {
             read_region(e, &ins);
@@ -705,7 +741,7 @@ static void run_insertions(const dem_dict *root, dem_system *s, int insert, cons
                 ins.material = s->bodies.templates[ins.body - 1].type;
             } else {
                 ins.material = particle_material_of(e, &s->materials);
-                read_diameter(e, &ins);
+                read_diameter(e, &ins, s->coarse_graining);
             }
             if (ins.method == INSERT_RANDOM) {
                 if (dem_dict_has(e, "number") == dem_dict_has(e, "solidFraction"))
@@ -783,6 +819,7 @@ void dem_case_read(const char *case_dir, dem_system *s, dem_run_settings *rs, in
     s->max_overlap_fraction = dem_dict_scalar_opt(root, "maxOverlapFraction", 0.2, 1e-6, 1.0);
     rs->timestep_override = dem_dict_bool_opt(root, "timeStepOverride", 0);
 
+    read_coarse_graining(root, s);
     read_domain(root, s);
     snprintf(rs->domain_source, sizeof rs->domain_source, "%s:%d", rs->dict_path, dem_dict_key_line(root, "domain"));
     read_materials(root, s);
@@ -790,6 +827,7 @@ void dem_case_read(const char *case_dir, dem_system *s, dem_run_settings *rs, in
     read_interactions(root, s);
     read_walls(root, s);
     read_multisphere(root, s);
+    check_coarse_graining(root, s);
     read_outlets(root, s);
     char constant_dir[4200];
     snprintf(constant_dir, sizeof constant_dir, "%s/constant", case_dir);

@@ -108,7 +108,9 @@ static void push(reader *rd, int line, const double x[3], const double *v, doubl
         if (!ins->has_diameter)
             file_fatal(rd, line, "no diameter column, and insertion '%s' has no 'diameter' entry: give one of "
                        "the two", ins->name);
-        d = dem_insertion_draw_diameter(ins, &rd->r);
+        d = dem_insertion_draw_diameter(ins, &rd->r);   /* the entry's diameters are the parcels' already */
+    } else {
+        d *= rd->s->coarse_graining;   /* the file gives the primary particles' diameter */
     }
     if (material < 0) {
         if (ins->material < 0)

@@ -62,6 +62,7 @@ typedef struct dem_contact_state {
     int coupling_read;       /* reader: p->beta and p->f_fluid hold the snapshot's (coupled runs) */
     dem_body_state bodies;   /* multisphere bodies (count 0: none) */
     dem_lifecycle_state lifecycle;
+    double coarse_graining;  /* the case's coarseGraining (the snapshot's attribute; 1 when absent) */
 } dem_contact_state;
 
 void dem_contact_state_free(dem_contact_state *cs);

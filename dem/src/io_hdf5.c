@@ -553,6 +553,8 @@ void dem_io_write_snapshot_contacts(dem_particle_writer *w, const dem_particles 
     if (cs && cs->history_size > 0) write_contacts(g, cs, path);
     if (cs && cs->bodies.count > 0) write_bodies(g, &cs->bodies, path);
     if (cs && cs->lifecycle.present) write_lifecycle(g, &cs->lifecycle, path);
+    if (cs && cs->coarse_graining > 1.0)   /* the diameters written are the parcels' */
+        write_scalar_attr(g, "coarse_graining", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &cs->coarse_graining, path);
 
     const long long step_ll = step;
     write_scalar_attr(g, "time", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &time, path);
@@ -785,6 +787,8 @@ int dem_io_read_snapshot_at(const char *base, double at_time, double tolerance, 
         read_contacts(g, cs, path);
         read_bodies(g, &cs->bodies, path);
         read_lifecycle(g, &cs->lifecycle, path);
+        if (!read_scalar_attr(g, "coarse_graining", H5T_NATIVE_DOUBLE, &cs->coarse_graining, path))
+            cs->coarse_graining = 1.0;
         cs->forces_read = found[PF_FIELD_f] && found[PF_FIELD_torque];
         cs->coupling_read = found[PF_FIELD_beta] && found[PF_FIELD_f_fluid];
     }

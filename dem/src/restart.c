@@ -15,6 +15,7 @@ void dem_restart_save_contacts(const dem_system *s, dem_contact_state *cs)
     dem_contact_store_free(&store);
     if (s->bodies.n) dem_bodies_to_state(s, &cs->bodies);
     dem_lifecycle_to_state(s, &cs->lifecycle);
+    cs->coarse_graining = s->coarse_graining;
 }
 
 void dem_restart_setup(dem_system *s, const dem_contact_state *cs)
@@ -43,6 +44,10 @@ int dem_restart_read(dem_system *s, const char *base, double at_time, double tol
     long step;
     if (dem_io_read_snapshot_at(base, at_time, tolerance, &s->p, &s->time, &step, cs) != 0) return -1;
     s->step = step;
+    if (cs && cs->coarse_graining != s->coarse_graining)   /* the snapshot's diameters are its parcels' */
+        dem_fatal("%s.h5 was written with coarseGraining %g, but the case now has %g: a restart keeps the "
+                  "parcels as they are; set coarseGraining back to %g", base, cs->coarse_graining,
+                  s->coarse_graining, cs->coarse_graining);
     for (int i = 0; i < s->p.n; i++) {
         if (s->p.type[i] < 0 || s->p.type[i] >= s->materials.ntypes)
             dem_fatal("%s.h5: particle id %lld has type %d, but the case defines %d materials",

@@ -14,6 +14,7 @@ void dem_system_init(dem_system *s)
     dem_particles_init(&s->p);
     s->models.fn_floor = -INFINITY;   /* the models: each slot's first (models.h) */
     s->max_overlap_fraction = 0.2;
+    s->coarse_graining = 1.0;
     dem_neighbour_init(&s->nlist, 0.0, 20, 0);
 }
 

@@ -47,6 +47,10 @@ typedef struct dem_system {
     int balance_started;                  /* inserted holds the initial set (set-up or a restart's snapshot) */
 
     double gravity[3];                /* [m/s^2] */
+    /* coarse graining: every particle is a parcel standing for cg^3 primary particles of
+     * diameter d / cg (docs/models/coarse_graining.md); 1: none. The DEM simulates the parcels
+     * as they are (Bierwisch et al. 2009); the coupling's drag sees the primary size */
+    double coarse_graining;
     double dt;                        /* [s] */
     double time;                      /* [s] */
     long step;

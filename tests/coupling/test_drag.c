@@ -183,13 +183,6 @@ static void formula_tables(void)
 }
 
 /* a CHECK line stating the value and its bound */
-static void check_below(const char *what, double value, double limit)
-{
-    char line[128];
-    snprintf(line, sizeof line, "%s: %.1e < %.0e", what, value, limit);
-    check_true(line, value < limit);
-}
-
 /* relative difference of the two one-sided values at a branch point */
 static double jump_in_re(enum cpl_drag_law law, double alpha, double re0)
 {

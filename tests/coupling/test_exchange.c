@@ -27,14 +27,6 @@
 
 static const double G[3] = {0.0, 0.0, -9.81};
 
-/* a CHECK line stating the value and its bound */
-static void check_below(const char *what, double value, double limit)
-{
-    char line[192];
-    snprintf(line, sizeof line, "%s: %.1e < %.0e", what, value, limit);
-    check_true(line, value < limit);
-}
-
 static double norm3(const double a[3]) { return sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
 
 typedef struct scene {
@@ -115,7 +107,7 @@ static void balance(void)
         for (int model = CPL_MODEL_A; model <= CPL_MODEL_B; model++)
             for (int mode = CPL_EXCHANGE_IMPLICIT; mode <= CPL_EXCHANGE_EXPLICIT; mode++) {
                 const cpl_force_params prm = {(enum cpl_model_type)model, (enum cpl_drag_law)law,
-                                              (enum cpl_exchange_mode)mode, rho_f, mu_f, {G[0], G[1], G[2]}, {0, 0, 0}};
+                                              (enum cpl_exchange_mode)mode, rho_f, mu_f, {G[0], G[1], G[2]}, {0, 0, 0}, 1.0};
                 cpl_force_params_check(&prm);   /* valid, or the test stops here */
                 cpl_fluid_forces_eval(&prm, &in, &f);
                 cpl_exchange_cells(&s.w, &f, (const double(*)[3])s.v, NCELLS, s.cell_volume, ksl, up, src);
@@ -182,7 +174,7 @@ static void balance(void)
     const int i = 1;
     const double slip = sqrt(pow(s.u_f[i][0] - s.v[i][0], 2) + pow(s.u_f[i][1] - s.v[i][1], 2) + pow(s.u_f[i][2] - s.v[i][2], 2));
     const double beta_p = cpl_drag_koch_hill(rho_f, mu_f, s.d[i], s.alpha[i], slip);
-    cpl_force_params pa = {CPL_MODEL_A, CPL_DRAG_KOCH_HILL, CPL_EXCHANGE_IMPLICIT, rho_f, mu_f, {G[0], G[1], G[2]}, {0, 0, 0}};
+    cpl_force_params pa = {CPL_MODEL_A, CPL_DRAG_KOCH_HILL, CPL_EXCHANGE_IMPLICIT, rho_f, mu_f, {G[0], G[1], G[2]}, {0, 0, 0}, 1.0};
     cpl_fluid_forces_eval(&pa, &in, &f);
     check_rel("model A: beta = beta_p", f.beta[i], beta_p, 1e-15);
     check_rel("model A: f_equation = -V_p grad p (x)", f.f_equation[i][0], -s.volume[i] * s.grad_p[i][0], 1e-15);
@@ -212,7 +204,7 @@ static void lone_particle(void)
     const double d[1] = {1e-3}, vp[1] = {M_PI / 6.0 * 1e-9}, alpha[1] = {0.7};
     const cpl_cell_weights w = {1, start, cell, weight};
     const cpl_particle_fluid in = {1, v, d, vp, u_f, gp, alpha, NULL};
-    const cpl_force_params prm = {CPL_MODEL_B, CPL_DRAG_DI_FELICE, CPL_EXCHANGE_IMPLICIT, 1000.0, 1e-3, {0, 0, -9.81}, {0, 0, 0}};
+    const cpl_force_params prm = {CPL_MODEL_B, CPL_DRAG_DI_FELICE, CPL_EXCHANGE_IMPLICIT, 1000.0, 1e-3, {0, 0, -9.81}, {0, 0, 0}, 1.0};
     cpl_fluid_forces f;
     cpl_fluid_forces_init(&f);
     cpl_fluid_forces_eval(&prm, &in, &f);
@@ -237,7 +229,7 @@ static void static_column(void)
                     const double alpha[1] = {a ? 1.0 : 0.6};
                     const cpl_particle_fluid in = {1, zero, d, vp, zero, gp, alpha, NULL};
                     const cpl_force_params prm = {(enum cpl_model_type)model, (enum cpl_drag_law)law,
-                                                  (enum cpl_exchange_mode)mode, rho_f, mu_f, {G[0], G[1], G[2]}, {0, 0, 0}};
+                                                  (enum cpl_exchange_mode)mode, rho_f, mu_f, {G[0], G[1], G[2]}, {0, 0, 0}, 1.0};
                     cpl_fluid_forces f;
                     cpl_fluid_forces_init(&f);
                     cpl_fluid_forces_eval(&prm, &in, &f);
@@ -257,7 +249,7 @@ static void settling(void)
     const double vp = M_PI / 6.0 * d * d * d, m = rho_p * vp;
     for (int model = CPL_MODEL_A; model <= CPL_MODEL_B; model++) {
         const cpl_force_params prm = {(enum cpl_model_type)model, CPL_DRAG_SCHILLER_NAUMANN, CPL_EXCHANGE_IMPLICIT,
-                                      rho_f, rho_f * nu, {G[0], G[1], G[2]}, {0, 0, 0}};
+                                      rho_f, rho_f * nu, {G[0], G[1], G[2]}, {0, 0, 0}, 1.0};
         const double u_f[1][3] = {{0, 0, 0}}, gp[1][3] = {{0, 0, rho_f * G[2]}}, dd[1] = {d}, vv[1] = {vp}, alpha[1] = {1.0};
         cpl_fluid_forces f;
         cpl_fluid_forces_init(&f);
@@ -276,6 +268,65 @@ static void settling(void)
         check_rel(what, -0.5 * (lo + hi), 0.1373, 0.01);
         cpl_fluid_forces_free(&f);
     }
+}
+
+/* Coarse graining (docs/models/coarse_graining.md): a parcel of diameter D = cg d stands for cg^3
+ * particles of diameter d; its drag is cg^3 times the law's for d (Re from d), for every law and
+ * voidage, to round-off; so it settles at its particles' terminal velocity (Schiller-Naumann,
+ * model A and B, bisection to 1e-12 relative; 1e-9 stated, the bisection's own tolerance). */
+static void parcels(void)
+{
+    const double rho_f = 10.0, mu_f = 1e-4, d = 200e-6, rho_p = 3000.0;
+    double worst = 0.0;
+    for (int law = 0; law < CPL_DRAG_COUNT; law++)
+        for (int c = 2; c <= 3; c++)
+            for (int a = 0; a < 4; a++) {
+                const double cg = c, alpha_v[4] = {0.45, 0.7, 0.95, 1.0}, D = cg * d;
+                const double v[1][3] = {{0, 0, 0}}, u_f[1][3] = {{0.3, 0, 0.1}}, gp[1][3] = {{0, 0, 0}};
+                const double dd[1] = {D}, vv[1] = {M_PI / 6.0 * D * D * D}, alpha[1] = {alpha_v[a]};
+                const cpl_force_params prm = {CPL_MODEL_A, (enum cpl_drag_law)law, CPL_EXCHANGE_IMPLICIT, rho_f, mu_f,
+                                              {G[0], G[1], G[2]}, {0, 0, 0}, cg};
+                cpl_force_params_check(&prm);
+                const cpl_particle_fluid in = {1, v, dd, vv, u_f, gp, alpha, NULL};
+                cpl_fluid_forces f;
+                cpl_fluid_forces_init(&f);
+                cpl_fluid_forces_eval(&prm, &in, &f);
+                const double want = cg * cg * cg * cpl_drag_beta((enum cpl_drag_law)law, rho_f, mu_f, d, alpha_v[a],
+                                                                  sqrt(0.3 * 0.3 + 0.1 * 0.1));
+                worst = fmax(worst, fabs(f.beta[0] - want) / want);
+                cpl_fluid_forces_free(&f);
+            }
+    check_below("parcel of cg = 2, 3: beta = cg^3 beta_law(d / cg), 5 laws x 4 voidages", worst, 1e-14);
+
+    double vt[4] = {0, 0, 0, 0};   /* terminal speed: particle and parcel, models A and B */
+    for (int model = CPL_MODEL_A; model <= CPL_MODEL_B; model++)
+        for (int parcel = 0; parcel < 2; parcel++) {
+            const double cg = parcel ? 3.0 : 1.0, D = cg * d, vp = M_PI / 6.0 * D * D * D, m = rho_p * vp;
+            const cpl_force_params prm = {(enum cpl_model_type)model, CPL_DRAG_SCHILLER_NAUMANN, CPL_EXCHANGE_IMPLICIT,
+                                          rho_f, mu_f, {G[0], G[1], G[2]}, {0, 0, 0}, cg};
+            const double u_f[1][3] = {{0, 0, 0}}, gp[1][3] = {{0, 0, rho_f * G[2]}}, dd[1] = {D}, vv[1] = {vp},
+                         alpha[1] = {1.0};
+            cpl_fluid_forces f;
+            cpl_fluid_forces_init(&f);
+            double lo = -10.0, hi = 0.0;
+            for (int it = 0; it < 200; it++) {
+                const double vz = 0.5 * (lo + hi), vel[1][3] = {{0, 0, vz}};
+                const cpl_particle_fluid in = {1, vel, dd, vv, u_f, gp, alpha, NULL};
+                cpl_fluid_forces_eval(&prm, &in, &f);
+                double F[3];
+                cpl_fluid_force(&f, 0, vel[0], F);
+                if (F[2] + m * G[2] > 0.0) lo = vz; else hi = vz;
+            }
+            vt[2 * model + parcel] = -0.5 * (lo + hi);
+            cpl_fluid_forces_free(&f);
+        }
+    check_rel("parcel of cg = 3 settles as its particles, model A [m/s]", vt[1], vt[0], 1e-9);
+    check_rel("parcel of cg = 3 settles as its particles, model B [m/s]", vt[3], vt[2], 1e-9);
+    const cpl_force_params bad = {CPL_MODEL_A, CPL_DRAG_GIDASPOW, CPL_EXCHANGE_IMPLICIT, rho_f, mu_f,
+                                  {G[0], G[1], G[2]}, {0, 0, 0}, 0.5};
+    volatile int stops;
+    STOPS_WITH(stops, cpl_force_params_check(&bad), "coarse-graining factor 0.5 must be in [1, 100]");
+    check_true("coarse-graining factor 0.5 refused", stops);
 }
 
 static void weights_errors(void)
@@ -303,6 +354,7 @@ int main(void)
     lone_particle();
     static_column();
     settling();
+    parcels();
     weights_errors();
     return finish("test_exchange");
 }

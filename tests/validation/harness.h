@@ -29,6 +29,15 @@ static inline int check_true(const char *what, int ok)
     return ok;
 }
 
+/* |measured| <= bound (a non-finite measure fails) */
+static inline int check_below(const char *what, double measured, double bound)
+{
+    const int ok = fabs(measured) <= bound && isfinite(measured);
+    printf("CHECK %-58s measured=%-12.6g bound=%-12.6g %s\n", what, measured, bound, ok ? "PASS" : "FAIL");
+    if (ok) checks_passed++; else checks_failed++;
+    return ok;
+}
+
 static inline int finish(const char *name)
 {
     printf("%s: %d passed, %d failed\n", name, checks_passed, checks_failed);

@@ -64,15 +64,6 @@ static const double E = 5e6, NU = 0.45, RHO = 2500, RAD = 1e-3, G = 9.81;
 static const double MU_R = 0.1, ETA_R = 0.3, W_ADH = 0.05, ETA_ADH = 2.0, V0 = 0.1;
 static const char *const names[] = {"", "cdt", "cdtJkr", "epsd"};
 
-/* |measured| <= bound, printed like the harness checks */
-static int check_below(const char *what, double measured, double bound)
-{
-    const int ok = fabs(measured) <= bound && isfinite(measured);
-    printf("CHECK %-58s measured=%-12.6g bound=%-12.6g %s\n", what, measured, bound, ok ? "PASS" : "FAIL");
-    if (ok) checks_passed++; else checks_failed++;
-    return ok;
-}
-
 /* seed 000 eq. 2-3, closed form */
 static double mu_r_jkr(double Y, double r_eff)
 {

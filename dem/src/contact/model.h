@@ -79,6 +79,10 @@ typedef struct dem_contact_model {
     /* optional: the largest separation (negative overlap) at which a contact with effective
      * radius r_eff still acts [m] (a JKR neck); 0 when NULL */
     double (*reach)(const struct dem_pair_coeffs *c, double r_eff);
+    /* NULL: the model holds for coarse-grained parcels as it is (its forces scale as cg^2 at
+     * the same relative overlap, with the contact stresses; docs/models/coarse_graining.md);
+     * else why it does not, the message with which a case with coarseGraining > 1 is refused */
+    const char *coarse_graining_refused;
 } dem_contact_model;
 
 /* What the normal model hands to the other slots. */

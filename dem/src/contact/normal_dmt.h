@@ -43,6 +43,8 @@ static const dem_contact_model normal_dmt_model = {
     .slot = SLOT_NORMAL, .name = "dmt",
     .params = dmt_param_table, .nparams = 1, .check = dmt_check,
     .contact_time = hertz_contact_time, .contact_time_name = "Hertz",
+    .coarse_graining_refused = "the adhesion 2 pi w R* grows as cg while the contact forces grow as cg^2, so a parcel is "
+        "less sticky than its particles (LIGGGHTS refuses cohesion too); no rule for w is applied implicitly",
 };
 
 #endif

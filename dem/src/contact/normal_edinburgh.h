@@ -156,6 +156,8 @@ static const dem_contact_model normal_edinburgh_model = {
     .check = edinburgh_check, .prepare = edinburgh_prepare, .read_case = edinburgh_read_case,
     .limit_force_default = 1,
     .contact_time = edinburgh_contact_time, .contact_time_name = "edinburgh unloading",
+    .coarse_graining_refused = "its tension threshold F_0 [N] and adhesion branch k_c delta^c_ex have no published "
+        "scaling for parcels",
 };
 
 #endif

@@ -88,6 +88,8 @@ static const dem_contact_model normal_jkr_model = {
     .params = jkr_param_table, .nparams = 1, .check = jkr_check,
     .contact_time = hertz_contact_time, .contact_time_name = "Hertz",
     .reach = jkr_reach,
+    .coarse_graining_refused = "the pull-off force 3/2 pi w R* grows as cg while the contact forces grow as cg^2, so a "
+        "parcel is less sticky than its particles (LIGGGHTS refuses cohesion too); no rule for w is applied implicitly",
 };
 
 #endif

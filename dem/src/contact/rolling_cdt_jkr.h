@@ -81,6 +81,8 @@ static inline void cdt_jkr_read_case(const dem_dict *d, double *values)
 static const dem_contact_model rolling_cdt_jkr_model = {
     .slot = SLOT_ROLLING, .name = "cdtJkr", .history = 3, .history_antisymmetric = 3,
     .params = cdt_jkr_param_table, .nparams = 2, .check = cdt_jkr_check, .read_case = cdt_jkr_read_case,
+    .coarse_graining_refused = "its JKR neck (work of adhesion) does not scale with the parcel as the contact forces do "
+        "(see normal jkr)",
 };
 
 #endif
