@@ -32,7 +32,8 @@ References (superficial velocity U, bed height L, voidage e; d, rho_f, mu = rho_
 Checks, per run (one CHECK line each; exit 1 on a FAIL):
   <run>_bed:        rising ramp, U in [0.2, 0.75] U_mf,ref: least-squares factor k of dP against the
                     law's pressure drop; measured = k x reference at 0.5 U_mf,ref, 5 %;
-  <run>_bed_curve:  the largest |dP / reference - 1| over the same points, 5 %;
+  <run>_bed_curve:  the largest |dP / reference - 1| over the same points, 5 % (cg 1 only: a bed of
+                    fewer parcels fluctuates more per point; INFO at cg > 1, with the scatter);
   <run>_plateau:    the mean dP over all times with U >= 1.3 U_mf,ref, less the bed's momentum change
                     over that window per area and time, M (v_end - v_start) / (A T) with v the mean
                     particle velocity of postProcessing/particles.dat (the particles' momentum
@@ -58,7 +59,12 @@ Checks, per run (one CHECK line each; exit 1 on a FAIL):
   <run>_momentum:   the largest relative residual of the gas momentum balance over every fluid
                     step (postProcessing/momentumBalance.dat: |residual| / max(|pressure drop x
                     area|, |particles' force|)), 1 %.
-Usage: postProcess.py <run directory>...
+With --coarse-graining (Allrun -coarseGraining), each run with coarseGraining > 1 against the
+run with 1:
+  <run>_vs_cg1_umf: the measured U_mf (as <run>_umf measures it), 5 %;
+  <run>_vs_cg1_bed: the packed bed's pressure drop per bed weight, (a U + b U^2) / (W/A) of the
+                    fitted branch at half the cg-1 run's U_mf,ref, 5 %.
+Usage: postProcess.py [--coarse-graining] <run directory>...
 """
 import os
 import re
@@ -87,8 +93,14 @@ def case_parameters(run):
     dem = read(os.path.join(run, "constant/demProperties"))
     cpl = read(os.path.join(run, "constant/couplingProperties"))
     glass = re.search(r"glass\s*\{([^}]*)\}", dem).group(1)
-    box = re.search(r"column\s*\{([^}]*)\}", dem).group(1)
-    lo, hi = vector(box, "min"), vector(box, "max")
+    box = re.search(r"column\s*\{([^}]*)\}", dem)
+    if box:    # the column's box wall
+        lo, hi = vector(box.group(1), "min"), vector(box.group(1), "max")
+    else:      # periodic sides (-coarseGraining): the domain across, the floor plane below
+        lo, hi = vector(re.search(r"domain\s*\{([^}]*)\}", dem).group(1), "min"), \
+            vector(re.search(r"domain\s*\{([^}]*)\}", dem).group(1), "max")
+        lo[2] = vector(re.search(r"floor\s*\{([^}]*)\}", dem).group(1), "point")[2]
+    cg = re.search(r"(?:^|\n)\s*coarseGraining\s+(" + NUM + r")\s*;", dem)
     pts = read(os.path.join(run, "constant/polyMesh/points"))
     z = np.array([float(m.group(3)) for m in re.finditer(r"\(\s*" + NUM + r"\s+" + NUM + r"\s+" + NUM + r"\s*\)", pts)])
     return {
@@ -100,6 +112,7 @@ def case_parameters(run):
         "height": z.max() - z.min(),
         "law": re.search(r"(?:^|\n)\s*drag\s+(\w+)\s*;", cpl).group(1),
         "voidFraction": re.search(r"voidFraction\s*\{[^}]*model\s+(\w+)\s*;", cpl).group(1),
+        "cg": float(cg.group(1)) if cg else 1.0,
     }
 
 
@@ -303,7 +316,17 @@ def analyse(run):
     checks.relative(f"{name}_bed", k * ref_mid, ref_mid, TOL_BED)
     dev = np.abs(dP[sel] / ref - 1.0)
     j = int(np.argmax(dev))
-    checks.deviation(f"{name}_bed_curve", dev[j], TOL_BED)
+    scatter = float(np.std(dP[sel] / ref - k))
+    if c["cg"] == 1.0:
+        checks.deviation(f"{name}_bed_curve", dev[j], TOL_BED)
+    else:
+        # a parcel carries cg^3 beads' drag: the pointwise signal of a bed of N/cg^3 parcels
+        # fluctuates sqrt(cg^3) times more (1.5 % dips at cg 3, 168 parcels), so the worst point
+        # measures the parcel count, not the law; what coarse graining must keep is the fitted
+        # branch and U_mf, checked against cg 1 below (compare_coarse_graining)
+        info(name, f"bed_curve (not checked at coarseGraining {c['cg']:g}): worst point "
+             f"{100 * dev[j]:.2f} % at U = {U[sel][j] / umf_ref:.3f} U_mf,ref")
+    info(name, f"packed branch: pointwise scatter of dP / law about the fit {100 * scatter:.2f} % (rms)")
 
     # plateau: all fluidised points, less the rate of change of the bed's momentum over them
     # (the time-averaged momentum balance of the particles: dP A = W A + M dv/dt - floor force)
@@ -364,8 +387,13 @@ def analyse(run):
     info(name, f"fluidised, U >= {PLATEAU} U_mf,ref ({t1:.3f} s to {t2:.3f} s): mean pressure drop "
          f"{raw:.2f} Pa ({100 * (raw / W - 1):+.2f} % from W/A), of which {momentum:+.2f} Pa is the bed's "
          f"momentum change (mean particle velocity {v1:+.4f} -> {v2:+.4f} m/s)")
-    fall = (np.arange(n) > i_peak) & (U >= BRANCH[0] * umf_ref) & (U <= 0.6 * umf_ref)
-    if fall.any():
+    # the falling ramp, where the re-settled bed's snapshots bracket it (a short run may end with
+    # the bed still spread, where bed_states has no packed height)
+    fall = ((np.arange(n) > i_peak) & (U >= BRANCH[0] * umf_ref) & (U <= 0.6 * umf_ref)
+            & np.isfinite(e_t) & np.isfinite(L_t))
+    if not fall.any():
+        info(name, "falling ramp: no point with a settled bed in a snapshot on both sides; not compared")
+    else:
         ref_f = law(U[fall], e_t[fall], c) * L_t[fall]
         k_f = float((dP[fall] * ref_f).sum() / (ref_f * ref_f).sum())
         info(name, f"falling ramp, U in [{BRANCH[0]}, 0.6] U_mf,ref: pressure drop {100 * (k_f - 1):+.2f} % from "
@@ -374,8 +402,39 @@ def analyse(run):
                 umf=umf, umf_ref=umf_ref, plateau=plateau, sel=sel, fit=(a, b))
 
 
-def main(runs):
+TOL_CG = 5.0   # coarse-grained runs against cg 1 (issue 22): U_mf and the packed-bed pressure drop
+
+
+def compare_coarse_graining(results):
+    """Each coarse-grained run against the run with cg = 1 (-coarseGraining): the measured U_mf,
+    and the packed bed's pressure drop per bed weight, from the fitted branch a U + b U^2 at half
+    the cg-1 run's U_mf,ref (per weight: the parcel beds hold the same mass to 1 bead in 4536, but
+    dividing takes even that out)."""
+    ref = [r for r in results if r["c"]["cg"] == 1.0]
+    if len(ref) != 1:
+        raise SystemExit("postProcess.py --coarse-graining: needs exactly one run with coarseGraining 1")
+    ref = ref[0]
+    u = 0.5 * ref["umf_ref"]
+    def packed(r):
+        a, b = r["fit"]
+        return (a * u + b * u * u) / r["W"]
+    for r in results:
+        cg = r["c"]["cg"]
+        info(r["name"], f"coarseGraining {cg:g}: bed L = {1e3 * r['L0']:.2f} mm, voidage {r['e0']:.4f} "
+             f"(cg 1: {1e3 * ref['L0']:.2f} mm, {ref['e0']:.4f}); U_mf {r['umf']:.4f} m/s; packed-bed "
+             f"pressure drop at {u:.4f} m/s {packed(r) * r['W']:.2f} Pa of W/A {r['W']:.2f} Pa")
+        if r is ref:
+            continue
+        checks.relative(f"{r['name']}_vs_cg1_umf", r["umf"], ref["umf"], TOL_CG)
+        checks.relative(f"{r['name']}_vs_cg1_bed", packed(r), packed(ref), TOL_CG)
+
+
+def main(argv):
+    compare = "--coarse-graining" in argv
+    runs = [a for a in argv if a != "--coarse-graining"]
     results = [analyse(r) for r in runs]
+    if compare:
+        compare_coarse_graining(results)
     ncol = 2 if len(results) > 1 else 1
     nrow = (len(results) + ncol - 1) // ncol
     fig, axes = plt.subplots(nrow, ncol, figsize=(6.0 * ncol, 4.4 * nrow), squeeze=False)
@@ -400,7 +459,8 @@ def main(runs):
         ax.set_ylim(0, max(r["dP"].max(), r["W"]) * 1.1)
         ax.set_xlabel("superficial velocity [m/s]")
         ax.set_ylabel("pressure drop [Pa]")
-        ax.set_title(f"{c['law']}, {c['voidFraction']} void fraction", fontsize=10)
+        ax.set_title(f"{c['law']}, {c['voidFraction']} void fraction"
+                     + (f", coarseGraining {c['cg']:g}" if c["cg"] != 1.0 else ""), fontsize=10)
         ax.legend(fontsize=7, loc="lower right")
     for ax in list(axes.flat)[len(results):]:
         ax.axis("off")
