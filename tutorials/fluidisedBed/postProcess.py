@@ -59,7 +59,12 @@ time-mean solid fraction map 1 - alphaMean, averaged over the depth x; the momen
 residual) and <case>/fluidisedBed.gif (the particles, every snapshot).
 Usage: postProcess.py <case> [t_stats]   (t_stats default 1 s)
        postProcess.py --window <case> <t0> <t1>   the pressure statistics of a window only
+       postProcess.py --coarse-graining <cg1 run> <run> ...   after each run's own check (which
+           writes postProcessing/bedSummary.json): CHECK <run>_vs_<cg1 run>_dP_mean, the mean
+           pressure drop per buoyant weight against the cg-1 run's, 3 %; INFO the expansion, the
+           fluctuation's size and its dominant frequency of each against cg 1
 """
+import json
 import os
 import sys
 
@@ -78,6 +83,7 @@ EXPANSION = (1.05, 2.0)
 DP_STD = (0.02, 0.5)
 FREQUENCY = (0.5, 4.0)      # x Baskakov's natural frequency of the bed
 PACKED = 0.6
+TOL_CG = 3.0               # %: coarse-grained runs' mean dP per weight against cg 1 (issue 22)
 
 
 def window_statistics(case, bed, t0, t1):
@@ -105,6 +111,8 @@ def main():
               f"{mean:.1f} Pa ({100 * (mean / w_a - 1):+.2f} % from W/A {w_a:.1f} Pa), std {std:.1f} Pa "
               f"({100 * std / w_a:.1f} %), dominant frequency {f:.2f} Hz")
         return 0
+    if sys.argv[1] == "--coarse-graining":   # postProcess.py --coarse-graining <cg1 run> <run> ...
+        return compare_coarse_graining(sys.argv[2:])
     case = sys.argv[1]
     t_stats = float(sys.argv[2]) if len(sys.argv) > 2 else 1.0
     bed = fc.case_bed(case, "beads")
@@ -173,7 +181,33 @@ def main():
     checks.at_most("lid_percent", 100.0 * at_lid[in_win].mean() / bed["n"], TOL_LID,
                    "beads resting at the lid: the gas presses them against it and dP no longer weighs the bed")
 
+    summary = dict(n=int(bed["n"]), w_a=w_a, dp_mean=mean - dp_momentum, dp_std=std, f_peak=f_peak,
+                   expansion=float(h_mean[in_win].mean() / h0), h_mean=float(h_mean[in_win].mean()))
+    with open(os.path.join(case, "postProcessing", "bedSummary.json"), "w") as f:
+        json.dump({k: float(v) for k, v in summary.items()}, f, indent=1)
     draw(case, snaps, t, dp, t_stats, w_a, mean, t_mb, rel, lo, hi)
+    return 1 if checks.failed else 0
+
+
+def compare_coarse_graining(cases):
+    """The runs at coarseGraining 2, 3 against the run at 1 (the first case), from each run's
+    postProcessing/bedSummary.json: the mean pressure drop per buoyant weight within TOL_CG;
+    the expansion and the fluctuation's size and frequency printed."""
+    runs = []
+    for case in cases:
+        with open(os.path.join(case, "postProcessing", "bedSummary.json")) as f:
+            runs.append((os.path.basename(os.path.normpath(case)), json.load(f)))
+    checks = fc.Checks()
+    name0, r0 = runs[0]
+    for name, r in runs:
+        print(f"INFO {name}: {int(r['n'])} parcels; dP_mean/(W/A) {r['dp_mean'] / r['w_a']:.4f}, "
+              f"std {100 * r['dp_std'] / r['w_a']:.1f} % of W/A, dominant frequency {r['f_peak']:.2f} Hz, "
+              f"expansion h/h_0 {r['expansion']:.3f}")
+    for name, r in runs[1:]:
+        checks.relative(f"{name}_vs_{name0}_dP_mean", r["dp_mean"] / r["w_a"], r0["dp_mean"] / r0["w_a"], TOL_CG)
+        print(f"INFO {name} vs {name0}: expansion {100 * (r['expansion'] / r0['expansion'] - 1):+.1f} %, "
+              f"fluctuation size {100 * (r['dp_std'] / r['w_a'] / (r0['dp_std'] / r0['w_a']) - 1):+.0f} %, "
+              f"frequency {100 * (r['f_peak'] / r0['f_peak'] - 1):+.0f} %")
     return 1 if checks.failed else 0
 
 
