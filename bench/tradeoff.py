@@ -1,0 +1,432 @@
+#!/usr/bin/env python3
+"""The speed/accuracy trade, measured (issue 22): every knob, one at a time from each case's
+reference setting, on the project's own validation cases; for every run the wall and CPU time
+and the error of each of the case's CHECK quantities against its reference.
+
+Cases (each made by its tutorial's Allrun, so the reference here is the tutorial's own short case):
+  settling      tutorials/settling, 0.1 s (one sphere; terminal velocity and the curve)
+  ergun         tutorials/ergun -short-case (Gidaspow, centre; the ramp through U_mf)
+  fluidisedBed  tutorials/fluidisedBed -short-case (the short Goldschmidt bed, 1.5 s)
+Knobs (a run changes one; the rest stay at the case's reference):
+  dt            the DEM step as a fraction of the Rayleigh time of the smallest particle; the
+                fluid step is kept (couplingInterval = round(deltaT / dt), dt = deltaT / interval);
+                above the time-step check's 0.2 the run sets timeStepOverride (reported: 'override')
+  couplingInterval  DEM steps per fluid step, the DEM step kept (the fluid step = interval x dt)
+  youngsModulus every material's E, the DEM step scaled with the Hertz contact time (E^-2/5)
+  voidFraction, interpolation, drag, faceMomentum, nCorrectors: the coupling's and the fluid's models
+  coarseGraining  ergun and fluidisedBed: their -cg-case at 1-4 (their own reference is cg 1 of that
+                family: a periodic column, the divided void fraction)
+  tangential    history or none: a model the scene may do without
+Every run ends as PASS (all checks pass), FAIL (with each check's number) or STOP (the program
+stopped: its message is kept); a run that crashes, hangs (timeout) or leaves a non-finite number is
+reported as such, which is a defect to fix.
+Output: bench/results/tradeoff.csv (one row per run and check), bench/results/<case>.png (the
+Pareto plots), docs/tradeoff.md (the table: per case and knob, each value's time and worst check
+error; the cheapest setting that passes every check, with its speed-up over the reference).
+Usage: tradeoff.py [-quick | -smoke] [-j N] [--cases a,b] [--knobs a,b]
+"""
+import argparse
+import csv
+import math
+import os
+import re
+import resource
+import shutil
+import subprocess
+import sys
+import time
+
+import numpy as np
+
+os.environ.setdefault("WM_PROJECT_DIR", "/opt/of/OpenFOAM-v1912")   # OpenFOAM's etc/, as the Allruns
+TOP = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+TUT = os.path.join(TOP, "tutorials")
+SOLVER = os.path.join(TOP, "build/foam/bin/voidPimpleFoam")
+WORK = os.path.join(TOP, "bench/results/runs")
+RESULTS = os.path.join(TOP, "bench/results")
+RAYLEIGH_LIMIT = 0.2          # dem/src/timestep.h RAYLEIGH_FRACTION
+CHECK = re.compile(r"^CHECK (\S+) measured=(\S+) (?:reference=(\S+) error=(\S+) tolerance=(\S+)|"
+                   r"limit=(\S+)|range=\[(\S+), (\S+)\])\S* (PASS|FAIL)")
+
+
+# --- editing a case ----------------------------------------------------------------------------
+def edit(path, pattern, repl, count=0, required=True):
+    with open(path) as f:
+        text = f.read()
+    new, n = re.subn(pattern, repl, text, count=count, flags=re.M)
+    if required and n == 0:
+        raise RuntimeError(f"{path}: '{pattern}' not found")
+    with open(path, "w") as f:
+        f.write(new)
+    return n
+
+
+def read(path):
+    with open(path) as f:
+        return f.read()
+
+
+def number(text, key):
+    m = re.search(r"^\s*" + key + r"\s+([-+0-9.eE]+)\s*;", text, flags=re.M)
+    if not m:
+        raise RuntimeError(f"no '{key}'")
+    return float(m.group(1))
+
+
+def rayleigh_time(case):
+    """The Rayleigh time [s] of the smallest particle (insertion diameters x coarseGraining) of the
+    softest material: pi R sqrt(rho / G) / (0.1631 nu + 0.8766), as dem/src/timestep.c."""
+    dem = re.sub(r"//[^\n]*", "", read(os.path.join(case, "constant/demProperties")))
+    cg = re.search(r"^\s*coarseGraining\s+([0-9.eE+-]+)\s*;", dem, flags=re.M)
+    cg = float(cg.group(1)) if cg else 1.0
+    diam = [float(v) for v in re.findall(r"diameter\s*\{[^}]*?(?:value|min)\s+([0-9.eE+-]+)", dem)]
+    tr = math.inf
+    for m in re.finditer(r"youngsModulus\s+([0-9.eE+-]+);\s*poissonsRatio\s+([0-9.eE+-]+);\s*density\s+([0-9.eE+-]+)", dem):
+        E, nu, rho = map(float, m.groups())
+        G = E / (2 * (1 + nu))
+        tr = min(tr, math.pi * 0.5 * cg * min(diam) * math.sqrt(rho / G) / (0.1631 * nu + 0.8766))
+    return tr
+
+
+def fluid_step(case):
+    return number(read(os.path.join(case, "system/controlDict")), "deltaT")
+
+
+def set_steps(case, dt, interval, override=False):
+    """The DEM step, the coupling interval and the fluid step deltaT = interval x dt."""
+    dem = os.path.join(case, "constant/demProperties")
+    edit(dem, r"^timeStep\s+[^;]+;", f"timeStep       {dt!r};", 1)
+    if override and "timeStepOverride" not in read(dem):
+        edit(dem, r"^(timeStep\s+[^;]+;)", r"\1\ntimeStepOverride true;", 1)
+    edit(os.path.join(case, "constant/couplingProperties"), r"^couplingInterval\s+[^;]+;",
+         f"couplingInterval {interval};", 1)
+    edit(os.path.join(case, "system/controlDict"), r"^deltaT\s+[^;]+;", f"deltaT          {interval * dt!r};", 1)
+
+
+def knob_dt(case, f):
+    tr = rayleigh_time(case)
+    step = fluid_step(case)
+    interval = max(1, int(round(step / (f * tr))))
+    dt = step / interval
+    set_steps(case, dt, interval, override=dt / tr > RAYLEIGH_LIMIT * (1 + 1e-9))
+    return f"{dt / tr:.3g} T_R" + (" (override)" if dt / tr > RAYLEIGH_LIMIT else "")
+
+
+def knob_interval(case, n):
+    dt = number(read(os.path.join(case, "constant/demProperties")), "timeStep")
+    set_steps(case, dt, int(n))
+    return f"{int(n)}"
+
+
+def knob_youngs(case, E):
+    dem = os.path.join(case, "constant/demProperties")
+    E_ref = float(re.search(r"youngsModulus\s+([0-9.eE+-]+)", read(dem)).group(1))
+    edit(dem, r"youngsModulus\s+[0-9.eE+-]+", f"youngsModulus {E:g}")
+    dt_ref = number(read(dem), "timeStep")
+    step = fluid_step(case)
+    dt = dt_ref * (E_ref / E) ** 0.4
+    interval = max(1, int(round(step / dt)))
+    set_steps(case, step / interval, interval)
+    return f"{E:g} Pa"
+
+
+def knob_coupling_key(key, sub=False):
+    def apply(case, value):
+        path = os.path.join(case, "constant/couplingProperties")
+        pat = (r"^(\s+model\s+)\w+;" if sub else r"^(" + key + r"\s+)\w+;")
+        edit(path, pat, r"\g<1>" + value + ";", 1)
+        return value
+    return apply
+
+
+def knob_fv(key):
+    def apply(case, value):
+        edit(os.path.join(case, "system/fvSolution"), r"^(\s*" + key + r"\s+)\w+;", r"\g<1>" + str(value) + ";", 1)
+        return str(value)
+    return apply
+
+
+def knob_tangential(case, value):
+    edit(os.path.join(case, "constant/demProperties"), r"tangential\s+\w+;", f"tangential {value};", 1)
+    return value
+
+
+KNOBS = {
+    "dt": knob_dt, "couplingInterval": knob_interval, "youngsModulus": knob_youngs,
+    "voidFraction": knob_coupling_key("voidFraction", sub=True),
+    "interpolation": knob_coupling_key("interpolation"), "drag": knob_coupling_key("drag"),
+    "faceMomentum": knob_fv("faceMomentum"), "nCorrectors": knob_fv("nCorrectors"),
+    "tangential": knob_tangential,
+}
+
+
+# --- the cases -------------------------------------------------------------------------------
+def make_settling(case, cg=None):
+    os.makedirs(case)
+    for sub in ("0", "constant", "system"):
+        shutil.copytree(os.path.join(TUT, "settling", sub), os.path.join(case, sub))
+    edit(os.path.join(case, "system/controlDict"), r"^endTime\s+[^;]+;", "endTime         0.1;", 1)
+
+
+def make_by_allrun(name, mode):
+    def make(case, cg=None):
+        args = [os.path.join(TUT, name, "Allrun"), mode if cg is None else "-cg-case", case]
+        if cg is not None:
+            args.append(str(cg))
+        subprocess.run(args, check=True, stdout=subprocess.DEVNULL)
+    return make
+
+
+def run_plain(case, post):
+    """blockMesh, the solver, then the check (command list, run in the case)."""
+    def run(case_dir):
+        return [["blockMesh"], [SOLVER], post]
+    return run
+
+
+CASES = {
+    "settling": dict(make=make_settling, post=[sys.executable, os.path.join(TUT, "settling/postProcess.py"),
+                                                "1e-4", "3000", "10", "1e-5", "9.81"], cg=False),
+    "ergun": dict(make=make_by_allrun("ergun", "-short-case"),
+                  post=[sys.executable, os.path.join(TUT, "ergun/postProcess.py"), "."], cg=True),
+    "fluidisedBed": dict(make=make_by_allrun("fluidisedBed", "-short-case"), staged=True, cg=True),
+}
+
+# the values of each knob per case (the reference's own value is not repeated: it is the
+# reference run); full sweep and -quick
+SWEEP = {
+    "settling": {
+        "dt": [0.05, 0.1, 0.3, 0.5], "couplingInterval": [1, 10, 200], "drag": ["DiFelice", "KochHill", "Beetstra"],
+        "interpolation": ["cellPoint", "cellLinear"], "faceMomentum": ["false"], "nCorrectors": [1, 3],
+    },
+    "ergun": {
+        "dt": [0.05, 0.1, 0.3, 0.5], "couplingInterval": [10, 25, 100, 200], "youngsModulus": [1e5, 1e6],
+        "voidFraction": ["divided", "gaussian"], "interpolation": ["cellPoint", "cellLinear"],
+        "drag": ["DiFelice", "KochHill", "Beetstra"], "faceMomentum": ["false"], "nCorrectors": [1, 3],
+        "coarseGraining": [1, 2, 3, 4], "tangential": ["none"],
+    },
+    "fluidisedBed": {
+        "dt": [0.05, 0.3, 0.5], "couplingInterval": [4, 32, 100], "youngsModulus": [1e5, 1e6],
+        "voidFraction": ["divided", "gaussian"], "interpolation": ["cellPoint"],
+        "drag": ["DiFelice", "KochHill", "Beetstra"], "faceMomentum": ["false"], "nCorrectors": [1, 3],
+        "coarseGraining": [1, 2, 3, 4], "tangential": ["none"],
+    },
+}
+QUICK = {
+    "settling": {"dt": [0.5], "couplingInterval": [1, 200], "drag": ["Beetstra"]},
+    "ergun": {"dt": [0.3], "couplingInterval": [100], "voidFraction": ["divided"], "coarseGraining": [2]},
+    "fluidisedBed": {"couplingInterval": [32], "coarseGraining": [2]},
+}
+SMOKE = {"settling": {"dt": [0.5], "couplingInterval": [200]}}
+
+
+def commands(name, case):
+    spec = CASES[name]
+    if spec.get("staged"):
+        return [[os.path.join(TUT, "fluidisedBed/Allrun"), "-run-case", case, "0.6", "report"]]
+    return [["blockMesh"], [SOLVER], spec["post"]]
+
+
+def stop_message(out, code):
+    """What the program said when it stopped: the text after OpenFOAM's FATAL ERROR line, else the
+    last line that says error, else the last line."""
+    lines = [l.strip() for l in out.splitlines() if l.strip()]
+    for k, l in enumerate(lines):
+        if "FATAL" in l:
+            return " ".join(lines[k + 1:k + 3])[:300]
+    errs = [l for l in lines if re.search(r"error|refuse|stop", l, flags=re.I)]
+    return (errs[-1] if errs else lines[-1] if lines else f"exit {code}")[:300]
+
+
+def run_one(name, knob, value, timeout):
+    """Make, change, run and check one case; returns the row dict (status, times, checks)."""
+    label = "reference" if knob is None else f"{knob}={value}"
+    case = os.path.join(WORK, name, re.sub(r"[^A-Za-z0-9_.=-]", "_", label))
+    shutil.rmtree(case, ignore_errors=True)
+    os.makedirs(os.path.dirname(case), exist_ok=True)
+    row = dict(case=name, knob=knob or "reference", value="" if knob is None else str(value), setting="",
+               status="", message="", wall=math.nan, cpu=math.nan, checks=[])
+    try:
+        if knob == "coarseGraining":
+            CASES[name]["make"](case, cg=int(value))
+            row["setting"] = f"cg {value}"
+        else:
+            CASES[name]["make"](case)
+            if knob is not None:
+                row["setting"] = KNOBS[knob](case, value)
+    except (RuntimeError, subprocess.CalledProcessError) as e:
+        row.update(status="ERROR", message=f"making the case: {e}")
+        return row
+    log = open(os.path.join(case, "log.tradeoff"), "w")
+    t0, c0 = time.time(), resource.getrusage(resource.RUSAGE_CHILDREN)
+    status, out = "PASS", ""
+    for cmd in commands(name, case):
+        try:
+            p = subprocess.run(cmd, cwd=case, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                               timeout=timeout, env=dict(os.environ, FOAM_SIGFPE="true"))
+        except subprocess.TimeoutExpired:
+            status = "HANG"
+            row["message"] = f"{os.path.basename(cmd[0])} did not end within {timeout} s"
+            break
+        log.write(p.stdout)
+        out += p.stdout
+        if p.returncode != 0 and cmd[0] != sys.executable:
+            status = "CRASH" if p.returncode < 0 or p.returncode > 128 else "STOP"
+            row["message"] = stop_message(p.stdout, p.returncode)
+            break
+    c1 = resource.getrusage(resource.RUSAGE_CHILDREN)
+    row["wall"] = time.time() - t0
+    row["cpu"] = (c1.ru_utime - c0.ru_utime) + (c1.ru_stime - c0.ru_stime)
+    log.close()
+    for line in out.splitlines():
+        m = CHECK.match(line)
+        if not m:
+            continue
+        (check, measured, ref, err, tol, limit, lo, hi, verdict) = m.groups()
+        measured = float(measured)
+        if err is not None:
+            e, t = float(err), float(tol)
+        elif limit is not None:
+            e, t = measured, float(limit)
+        else:
+            e, t = measured, f"[{lo}, {hi}]"
+        row["checks"].append((check, e, t, verdict))
+        if not math.isfinite(measured):
+            status = "NONFINITE"
+    if status == "PASS":
+        if not row["checks"]:
+            status, row["message"] = "ERROR", "no CHECK lines"
+        elif any(c[3] == "FAIL" for c in row["checks"]):
+            status = "FAIL"
+    row["status"] = status
+    return row
+
+
+def worst(row):
+    """The largest check error relative to its tolerance (1 = at the tolerance), for sorting."""
+    r = 0.0
+    for _, e, t, verdict in row["checks"]:
+        if isinstance(t, float) and t > 0:
+            r = max(r, abs(e) / t)
+        elif verdict == "FAIL":
+            r = max(r, 1.5)
+    return r
+
+
+# --- output ----------------------------------------------------------------------------------
+def write_csv(rows, path):
+    with open(path, "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["case", "knob", "value", "setting", "status", "wall_s", "cpu_s", "check", "error", "tolerance",
+                    "verdict", "message"])
+        for r in rows:
+            for c in r["checks"] or [("", "", "", "")]:
+                w.writerow([r["case"], r["knob"], r["value"], r["setting"], r["status"], f"{r['wall']:.1f}",
+                            f"{r['cpu']:.1f}", *c, r["message"]])
+
+
+def pareto_plot(name, rows, path):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(figsize=(7.5, 5))
+    knobs = sorted({r["knob"] for r in rows})
+    colours = plt.cm.tab10(np.linspace(0, 1, 10))
+    for k, knob in enumerate(knobs):
+        pts = [r for r in rows if r["knob"] == knob and math.isfinite(r["wall"]) and r["checks"]]
+        if not pts:
+            continue
+        ax.scatter([r["wall"] for r in pts], [max(worst(r), 1e-3) for r in pts], color=colours[k % 10],
+                   marker="*" if knob == "reference" else "o", s=90 if knob == "reference" else 30, label=knob)
+        for r in pts:
+            ax.annotate(r["value"], (r["wall"], max(worst(r), 1e-3)), fontsize=6, xytext=(3, 2),
+                        textcoords="offset points")
+    ax.axhspan(1e-3, 1.0, color="tab:green", alpha=0.08, label="every check within its tolerance")
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("wall time [s]")
+    ax.set_ylabel("worst check error / its tolerance")
+    ax.set_title(f"{name}: each knob changed from the reference", fontsize=10)
+    ax.legend(fontsize=7, loc="upper right")
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+
+
+def write_markdown(rows, path, command):
+    lines = ["# The speed/accuracy trade, measured", "",
+             f"Generated by `{command}` ({time.strftime('%Y-%m-%d %H:%M UTC', time.gmtime())}, "
+             f"{os.cpu_count()} cores; wall and CPU time per run, two runs at a time: these machines are "
+             "shared and noisy, so ratios within one sweep are what to read). Each row changes one knob "
+             "from the case's reference (bench/tradeoff.py says how each knob is applied). "
+             "'worst' is the largest check error over its tolerance (1 = at the tolerance); the "
+             "checks are the tutorial's own, against closed forms or published numbers.", ""]
+    for name in CASES:
+        rs = [r for r in rows if r["case"] == name]
+        if not rs:
+            continue
+        ref = next((r for r in rs if r["knob"] == "reference"), None)
+        lines += [f"## {name}", "", "| knob | value | setting | status | wall [s] | CPU [s] | worst | failing checks (error / tolerance) or message |",
+                  "|---|---|---|---|---|---|---|---|"]
+        for r in rs:
+            fails = "; ".join(f"{c} {e:.3g}/{t}" for c, e, t, v in r["checks"] if v == "FAIL") or r["message"]
+            lines.append(f"| {r['knob']} | {r['value']} | {r['setting']} | {r['status']} | {r['wall']:.1f} | "
+                         f"{r['cpu']:.1f} | {worst(r):.2f} | {fails} |")
+        passing = [r for r in rs if r["status"] == "PASS"]
+        if ref and passing:
+            best = min(passing, key=lambda r: r["wall"])
+            lines += ["", f"Cheapest setting that passes every check: **{best['knob']} {best['value']}** "
+                      f"({best['setting'] or 'the reference'}), {best['wall']:.1f} s wall against the reference's "
+                      f"{ref['wall']:.1f} s: **{ref['wall'] / best['wall']:.2f}x** (CPU {ref['cpu'] / max(best['cpu'], 1e-9):.2f}x)."]
+        lines += ["", f"![{name}](../bench/results/{name}.png) (made by the same command, not committed)", ""]
+    with open(path, "w") as f:
+        f.write("\n".join(lines) + "\n")
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("-quick", action="store_true")
+    ap.add_argument("-smoke", action="store_true")
+    ap.add_argument("-j", type=int, default=min(2, os.cpu_count() or 1))
+    ap.add_argument("--cases")
+    ap.add_argument("--knobs")
+    ap.add_argument("--timeout", type=float, default=1800.0)
+    ap.add_argument("--markdown", default=os.path.join(TOP, "docs/tradeoff.md"))
+    a = ap.parse_args()
+    sweep = SMOKE if a.smoke else QUICK if a.quick else SWEEP
+    cases = a.cases.split(",") if a.cases else list(sweep)
+    jobs = []
+    for name in cases:
+        jobs.append((name, None, None))
+        for knob, values in sweep[name].items():
+            if a.knobs and knob not in a.knobs.split(","):
+                continue
+            jobs += [(name, knob, v) for v in values]
+    print(f"tradeoff: {len(jobs)} runs, {a.j} at a time")
+    from concurrent.futures import ThreadPoolExecutor
+    rows = []
+    t0 = time.time()
+    with ThreadPoolExecutor(max_workers=a.j) as ex:
+        for row in ex.map(lambda j: run_one(*j, a.timeout), jobs):
+            rows.append(row)
+            print(f"  {row['case']:13s} {row['knob']:16s} {row['value']:10s} {row['status']:9s} "
+                  f"{row['wall']:7.1f} s wall {row['cpu']:7.1f} s CPU  worst {worst(row):.2f}  {row['setting']}"
+                  + (f"  ({row['message']})" if row["message"] else ""), flush=True)
+    os.makedirs(RESULTS, exist_ok=True)
+    tag = "smoke" if a.smoke else "quick" if a.quick else "full"
+    write_csv(rows, os.path.join(RESULTS, f"tradeoff_{tag}.csv"))
+    for name in cases:
+        pareto_plot(name, [r for r in rows if r["case"] == name], os.path.join(RESULTS, f"{name}.png"))
+    if not a.smoke:
+        write_markdown(rows, a.markdown, "bench/tradeoff.sh" + (" -quick" if a.quick else ""))
+    print(f"tradeoff: {time.time() - t0:.0f} s wall; bench/results/tradeoff_{tag}.csv"
+          + ("" if a.smoke else f", {os.path.relpath(a.markdown, TOP)}"))
+    bad = [r for r in rows if r["status"] in ("CRASH", "HANG", "NONFINITE", "ERROR")]
+    for r in bad:
+        print(f"DEFECT {r['case']} {r['knob']}={r['value']}: {r['status']} {r['message']}")
+    ref_fail = [r for r in rows if r["knob"] == "reference" and r["status"] != "PASS"]
+    return 1 if bad or ref_fail else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

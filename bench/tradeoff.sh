@@ -1,0 +1,12 @@
+#!/bin/bash
+# The speed/accuracy trade (issue 22): every knob of each validation case, one at a time from the
+# case's reference, with wall and CPU time and each check's error; writes
+# bench/results/tradeoff_<full|quick|smoke>.csv, bench/results/<case>.png (Pareto plots) and
+# docs/tradeoff.md (not with -smoke). bench/tradeoff.py says what each knob does.
+# Usage: bench/tradeoff.sh [-quick | -smoke] [-j N] [--cases a,b] [--knobs a,b]
+#   (full: settling, ergun, fluidisedBed, every knob; -quick: fewer points, under 10 minutes on
+#    2 cores; -smoke: the settling sphere, three runs, seconds: what ctest runs)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+[ -x build/foam/bin/voidPimpleFoam ] || ./Allwmake
+exec /usr/bin/python3 bench/tradeoff.py "$@"
