@@ -30,7 +30,6 @@ import csv
 import math
 import os
 import re
-import resource
 import shutil
 import subprocess
 import sys
@@ -257,27 +256,41 @@ def run_one(name, knob, value, timeout):
     except (RuntimeError, subprocess.CalledProcessError) as e:
         row.update(status="ERROR", message=f"making the case: {e}")
         return row
-    log = open(os.path.join(case, "log.tradeoff"), "w")
-    t0, c0 = time.time(), resource.getrusage(resource.RUSAGE_CHILDREN)
+    logpath = os.path.join(case, "log.tradeoff")
+    t0, cpu = time.time(), 0.0
     status, out = "PASS", ""
+    env = dict(os.environ, FOAM_SIGFPE="true")
     for cmd in commands(name, case):
-        try:
-            p = subprocess.run(cmd, cwd=case, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
-                               timeout=timeout, env=dict(os.environ, FOAM_SIGFPE="true"))
-        except subprocess.TimeoutExpired:
+        # each command's own CPU time (wait4: the runs go on in parallel threads)
+        with open(logpath, "a") as log:
+            start = len(read(logpath)) if os.path.exists(logpath) else 0
+            p = subprocess.Popen(cmd, cwd=case, stdout=log, stderr=subprocess.STDOUT, env=env)
+            deadline = time.time() + timeout
+            while True:
+                pid, code, usage = os.wait4(p.pid, os.WNOHANG)
+                if pid:
+                    break
+                if time.time() > deadline:
+                    p.kill()
+                    pid, code, usage = os.wait4(p.pid, 0)
+                    code = None
+                    break
+                time.sleep(0.2)
+        cpu += usage.ru_utime + usage.ru_stime
+        text = read(logpath)[start:]
+        out += text
+        if code is None:
             status = "HANG"
-            row["message"] = f"{os.path.basename(cmd[0])} did not end within {timeout} s"
+            row["message"] = f"{os.path.basename(cmd[0])} did not end within {timeout:g} s"
             break
-        log.write(p.stdout)
-        out += p.stdout
-        if p.returncode != 0 and cmd[0] != sys.executable:
-            status = "CRASH" if p.returncode < 0 or p.returncode > 128 else "STOP"
-            row["message"] = stop_message(p.stdout, p.returncode)
+        signal = os.WIFSIGNALED(code)
+        rc = os.WEXITSTATUS(code) if os.WIFEXITED(code) else -os.WTERMSIG(code)
+        if (signal or rc != 0) and cmd[0] != sys.executable:
+            status = "CRASH" if signal or rc > 128 else "STOP"
+            row["message"] = stop_message(text, rc)
             break
-    c1 = resource.getrusage(resource.RUSAGE_CHILDREN)
     row["wall"] = time.time() - t0
-    row["cpu"] = (c1.ru_utime - c0.ru_utime) + (c1.ru_stime - c0.ru_stime)
-    log.close()
+    row["cpu"] = cpu
     for line in out.splitlines():
         m = CHECK.match(line)
         if not m:
