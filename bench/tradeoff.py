@@ -256,7 +256,7 @@ def run_one(name, knob, value, timeout):
     except (RuntimeError, subprocess.CalledProcessError) as e:
         row.update(status="ERROR", message=f"making the case: {e}")
         return row
-    logpath = os.path.join(case, "log.tradeoff")
+    logpath = case + ".log"      # beside the case: a tutorial's own run clears log.* in it
     t0, cpu = time.time(), 0.0
     status, out = "PASS", ""
     env = dict(os.environ, FOAM_SIGFPE="true")
