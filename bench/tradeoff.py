@@ -344,7 +344,7 @@ def pareto_plot(name, rows, path):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    fig, ax = plt.subplots(figsize=(7.5, 5))
+    fig, ax = plt.subplots(figsize=(9, 5))
     knobs = sorted({r["knob"] for r in rows})
     colours = plt.cm.tab10(np.linspace(0, 1, 10))
     for k, knob in enumerate(knobs):
@@ -356,13 +356,16 @@ def pareto_plot(name, rows, path):
         for r in pts:
             ax.annotate(r["value"], (r["wall"], max(worst(r), 1e-3)), fontsize=6, xytext=(3, 2),
                         textcoords="offset points")
-    ax.axhspan(1e-3, 1.0, color="tab:green", alpha=0.08, label="every check within its tolerance")
+    ys = [max(worst(r), 1e-3) for r in rows if r["checks"]] or [1.0]
+    lo, hi = min(ys) / 2, max(2.0, 2 * max(ys))
+    ax.axhspan(lo, 1.0, color="tab:green", alpha=0.08, label="every check within its tolerance")
+    ax.set_ylim(lo, hi)
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.set_xlabel("wall time [s]")
     ax.set_ylabel("worst check error / its tolerance")
     ax.set_title(f"{name}: each knob changed from the reference", fontsize=10)
-    ax.legend(fontsize=7, loc="upper right")
+    ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
     fig.tight_layout()
     fig.savefig(path, dpi=110)
     plt.close(fig)
