@@ -23,7 +23,7 @@ reported as such, which is a defect to fix.
 Output: bench/results/tradeoff.csv (one row per run and check), bench/results/<case>.png (the
 Pareto plots), docs/tradeoff.md (the table: per case and knob, each value's time and worst check
 error; the cheapest setting that passes every check, with its speed-up over the reference).
-Usage: tradeoff.py [-quick | -smoke] [-j N] [--cases a,b] [--knobs a,b]
+Usage: tradeoff.py [-quick | -smoke | -extremes] [-j N] [--cases a,b] [--knobs a,b]
 """
 import argparse
 import csv
@@ -150,8 +150,18 @@ def knob_tangential(case, value):
     return value
 
 
+def knob_dt_strict(case, f):
+    """The DEM step at f T_R without timeStepOverride: past the check's limit the run must stop
+    with the time-step check's message (the regression point of the extremes)."""
+    tr = rayleigh_time(case)
+    step = fluid_step(case)
+    interval = max(1, int(round(step / (f * tr))))
+    set_steps(case, step / interval, interval)
+    return f"{step / interval / tr:.3g} T_R (no override)"
+
+
 KNOBS = {
-    "dt": knob_dt, "couplingInterval": knob_interval, "youngsModulus": knob_youngs,
+    "dt": knob_dt, "dtStrict": knob_dt_strict, "couplingInterval": knob_interval, "youngsModulus": knob_youngs,
     "voidFraction": knob_coupling_key("voidFraction", sub=True),
     "interpolation": knob_coupling_key("interpolation"), "drag": knob_coupling_key("drag"),
     "faceMomentum": knob_fv("faceMomentum"), "nCorrectors": knob_fv("nCorrectors"),
@@ -216,6 +226,28 @@ QUICK = {
     "ergun": {"dt": [0.3], "couplingInterval": [100], "voidFraction": ["divided"], "coarseGraining": [2]},
     "fluidisedBed": {"couplingInterval": [32], "coarseGraining": [2]},
 }
+# past the sweep, to find where each knob's result leaves its tolerance and where the run stops
+# (run with the full sweep, or alone with -extremes); coarseGraining ends at the tutorials' 4
+EXTREMES = {
+    "settling": {"dt": [1, 3, 10], "couplingInterval": [1000, 5000, 20000], "dtStrict": [0.25]},
+    "ergun": {"dt": [0.7, 1.0, 1.5], "couplingInterval": [500, 1000], "youngsModulus": [1e4, 1e3],
+              "dtStrict": [0.25]},
+    "fluidisedBed": {"dt": [0.7, 1.0, 1.5], "couplingInterval": [200, 500, 1000], "youngsModulus": [1e4, 1e3]},
+}
+# knobs with an order, for the extremes table; their values in the reference case
+ORDERED = ("dt", "dtStrict", "couplingInterval", "youngsModulus", "nCorrectors", "coarseGraining")
+
+
+def reference_values(case):
+    dem = read(os.path.join(case, "constant/demProperties"))
+    dt = number(dem, "timeStep") / rayleigh_time(case)
+    return {"dt": dt, "dtStrict": dt,
+            "couplingInterval": number(read(os.path.join(case, "constant/couplingProperties")), "couplingInterval"),
+            "youngsModulus": float(re.search(r"youngsModulus\s+([0-9.eE+-]+)", dem).group(1)),
+            "nCorrectors": number(read(os.path.join(case, "system/fvSolution")), "nCorrectors"),
+            "coarseGraining": 1.0}
+
+
 SMOKE = {"settling": {"dt": [0.5], "couplingInterval": [200]}}
 
 
@@ -232,9 +264,9 @@ def stop_message(out, code):
     lines = [l.strip() for l in out.splitlines() if l.strip()]
     for k, l in enumerate(lines):
         if "FATAL" in l:
-            return " ".join(lines[k + 1:k + 3])[:300]
+            return " ".join(lines[k + 1:k + 3])[:420]
     errs = [l for l in lines if re.search(r"error|refuse|stop", l, flags=re.I)]
-    return (errs[-1] if errs else lines[-1] if lines else f"exit {code}")[:300]
+    return (errs[-1] if errs else lines[-1] if lines else f"exit {code}")[:420]
 
 
 def run_one(name, knob, value, timeout):
@@ -253,6 +285,8 @@ def run_one(name, knob, value, timeout):
             CASES[name]["make"](case)
             if knob is not None:
                 row["setting"] = KNOBS[knob](case, value)
+            else:
+                row["refvals"] = reference_values(case)
     except (RuntimeError, subprocess.CalledProcessError) as e:
         row.update(status="ERROR", message=f"making the case: {e}")
         return row
@@ -289,7 +323,7 @@ def run_one(name, knob, value, timeout):
         rc = os.WEXITSTATUS(code) if os.WIFEXITED(code) else -os.WTERMSIG(code)
         if (signal or rc != 0) and cmd[0] != sys.executable:
             status = "CRASH" if signal or rc > 128 else "STOP"
-            row["message"] = stop_message(text, rc)
+            row["message"] = stop_message(text, rc).replace(case + "/", "")
             break
     row["wall"] = time.time() - t0
     row["cpu"] = cpu
@@ -376,6 +410,46 @@ CG_NOTE = ("The coarseGraining rows are the tutorial's -coarseGraining family (a
            "times compare with the reference's roughly: the bed and the column differ a little.")
 
 
+def knob_value(r):
+    """A run's knob value as a number (dt: the fraction of T_R it ran at), for ordering."""
+    if r["knob"] in ("dt", "dtStrict"):
+        return float(r["setting"].split()[0]) if r["setting"] else float(r["value"])
+    return float(r["value"])
+
+
+def extremes(rs):
+    """Per ordered knob and direction from the reference: the last value that passes, the first that
+    leaves its tolerance (FAIL) and the first at which the run stops, with its message."""
+    ref = next((r for r in rs if r["knob"] == "reference" and "refvals" in r), None)
+    if ref is None:
+        return []
+    out = []
+    for knob in ORDERED:
+        pts = sorted((r for r in rs if r["knob"] == knob), key=knob_value)
+        if not pts:
+            continue
+        x0 = ref["refvals"][knob]
+        for sign, word in ((1, "up"), (-1, "down")):
+            side = [r for r in pts if sign * (knob_value(r) - x0) > 1e-9 * abs(x0)]
+            side.sort(key=lambda r: sign * knob_value(r))
+            if not side:
+                continue
+            passing, fail, stop = f"{x0:.3g} (reference)", None, None
+            for r in side:
+                if r["status"] == "PASS" and fail is None and stop is None:
+                    passing = f"{knob_value(r):.3g}"
+                elif r["status"] == "FAIL" and fail is None and stop is None:
+                    fail = r
+                elif r["status"] not in ("PASS", "FAIL") and stop is None:
+                    stop = r
+            out.append((knob, f"{x0:.3g}", word, passing,
+                        f"{knob_value(fail):.3g} (worst {worst(fail):.2f})" if fail else
+                        f"not within {knob_value(side[-1]):.3g}",
+                        f"{knob_value(stop):.3g}: {stop['status']} {stop['message']}" if stop else
+                        f"not within {knob_value(side[-1]):.3g}"))
+    return out
+
+
 def write_markdown(rows, path, command):
     lines = ["# The speed/accuracy trade, measured", "",
              f"Generated by `{command}` ({time.strftime('%Y-%m-%d %H:%M UTC', time.gmtime())}, "
@@ -397,6 +471,12 @@ def write_markdown(rows, path, command):
                          f"{r['cpu']:.1f} | {worst(r):.2f} | {fails} |")
         if any(r["knob"] == "coarseGraining" for r in rs):
             lines += ["", CG_NOTE]
+        ext = extremes(rs)
+        if ext:
+            lines += ["", "Extremes (dt in T_R of the smallest particle; a knob changed alone from the reference):", "",
+                      "| knob | reference | direction | last passing | leaves its tolerance at | stops at, with its message |",
+                      "|---|---|---|---|---|---|"]
+            lines += ["| " + " | ".join(e) + " |" for e in ext]
         passing = [r for r in rs if r["status"] == "PASS"]
         if ref and passing:
             best = min(passing, key=lambda r: r["wall"])
@@ -412,13 +492,15 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("-quick", action="store_true")
     ap.add_argument("-smoke", action="store_true")
+    ap.add_argument("-extremes", action="store_true", help="only the points past the sweep (EXTREMES)")
     ap.add_argument("-j", type=int, default=min(2, os.cpu_count() or 1))
     ap.add_argument("--cases")
     ap.add_argument("--knobs")
     ap.add_argument("--timeout", type=float, default=1800.0)
     ap.add_argument("--markdown", default=os.path.join(TOP, "docs/tradeoff.md"))
     a = ap.parse_args()
-    sweep = SMOKE if a.smoke else QUICK if a.quick else SWEEP
+    sweep = SMOKE if a.smoke else QUICK if a.quick else EXTREMES if a.extremes else \
+        {c: {**SWEEP[c], **{k: SWEEP[c].get(k, []) + v for k, v in EXTREMES[c].items()}} for c in SWEEP}
     cases = a.cases.split(",") if a.cases else list(sweep)
     jobs = []
     for name in cases:
@@ -438,12 +520,12 @@ def main():
                   f"{row['wall']:7.1f} s wall {row['cpu']:7.1f} s CPU  worst {worst(row):.2f}  {row['setting']}"
                   + (f"  ({row['message']})" if row["message"] else ""), flush=True)
     os.makedirs(RESULTS, exist_ok=True)
-    tag = "smoke" if a.smoke else "quick" if a.quick else "full"
+    tag = "smoke" if a.smoke else "quick" if a.quick else "extremes" if a.extremes else "full"
     write_csv(rows, os.path.join(RESULTS, f"tradeoff_{tag}.csv"))
     for name in cases:
         pareto_plot(name, [r for r in rows if r["case"] == name], os.path.join(RESULTS, f"{name}.png"))
     if not a.smoke:
-        write_markdown(rows, a.markdown, "bench/tradeoff.sh" + (" -quick" if a.quick else ""))
+        write_markdown(rows, a.markdown, "bench/tradeoff.sh" + (" -quick" if a.quick else " -extremes" if a.extremes else ""))
     print(f"tradeoff: {time.time() - t0:.0f} s wall; bench/results/tradeoff_{tag}.csv"
           + ("" if a.smoke else f", {os.path.relpath(a.markdown, TOP)}"))
     bad = [r for r in rows if r["status"] in ("CRASH", "HANG", "NONFINITE", "ERROR")]
