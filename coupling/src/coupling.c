@@ -41,6 +41,20 @@
 #include "timestep.h"
 #include "voidfraction.h"
 
+/* The coupling's stages, timed for the end-of-run report (coupling_report_timings). */
+#define CPL_STAGES(X)                                                                            \
+    X(VOIDFRACTION, "void fraction (particle volumes onto cells)")                              \
+    X(INTERPOLATION, "interpolation (fluid fields at the particles)")                           \
+    X(DRAG, "drag and fluid forces (the law per particle)")                                     \
+    X(EXCHANGE, "exchange (forces to the DEM, sources to the cells)")                           \
+    X(OUTPUT, "output (snapshots, postProcessing/particles.dat)")
+#define CPL_STAGE_ID(N, TEXT) CPL_STAGE_##N,
+enum { CPL_STAGES(CPL_STAGE_ID) CPL_STAGE_COUNT, CPL_STAGE_DEM = -1 };
+#undef CPL_STAGE_ID
+#define CPL_STAGE_TEXT(N, TEXT) TEXT,
+static const char *const cpl_stage_names[CPL_STAGE_COUNT] = {CPL_STAGES(CPL_STAGE_TEXT)};
+#undef CPL_STAGE_TEXT
+
 struct coupling {
     char case_dir[4096];
     dem_system s;
@@ -66,7 +80,9 @@ struct coupling {
     double (*up)[3], (*source)[3];
     dem_particle_writer *writer;
     FILE *means;
-    double dem_seconds, coupling_seconds;
+    double dem_seconds;            /* wall time in the DEM's steps and list remakes [s] */
+    double stage_seconds[CPL_STAGE_COUNT];   /* the coupling's own wall time per stage [s] */
+    long dem_steps;               /* taken in this run */
     long outside_reported;
     int restarted;                /* continued from a particle snapshot at t_start > 0 */
     int exchanged;                /* p->beta, p->f_fluid hold what the fluid received (step 3) */
@@ -76,11 +92,13 @@ struct coupling {
     double (*each_wall)[3];       /* each wall's force on the particles, the same mean [N] */
 };
 
-static double now(void)
+/* c->stage_seconds[stage] (or, for CPL_STAGE_DEM, c->dem_seconds) += the time since *t; *t = now */
+static void lap(coupling *c, int stage, double *t)
 {
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+    const double now = dem_clock();
+    if (stage == CPL_STAGE_DEM) c->dem_seconds += now - *t;
+    else c->stage_seconds[stage] += now - *t;
+    *t = now;
 }
 
 static void read_coupling_properties(coupling *c, double dt_f, double *alpha_min, enum cpl_vf_model *vf_model,
@@ -149,6 +167,7 @@ static void particle_volumes(coupling *c)
 
 static void update_void_fraction(coupling *c)
 {
+    double t = dem_clock();
     dem_particles *p = &c->s.p;
     grow_particles(c, p->n);
     particle_volumes(c);
@@ -160,6 +179,7 @@ static void update_void_fraction(coupling *c)
                     "force and give none to the fluid", outside, c->s.time);
         c->outside_reported = outside;
     }
+    lap(c, CPL_STAGE_VOIDFRACTION, &t);
 }
 
 /* Fluid quantities at the particles and their forces, for the current weights and velocities.
@@ -172,6 +192,7 @@ static void evaluate_forces(coupling *c, const double (*U)[3], const double (*gr
 {
     dem_particles *p = &c->s.p;
     if (c->vf_generation != p->generation) update_void_fraction(c);   /* particles came or went since */
+    double t = dem_clock();
     const cpl_cell_weights w = weights_of(c);
     cpl_gather_scalar(&w, c->vf.alpha, c->alpha_p);
     if (c->interp_scheme == CPL_INTERP_CELL) {   /* the spreading weights: exact balance */
@@ -196,11 +217,13 @@ static void evaluate_forces(coupling *c, const double (*U)[3], const double (*gr
         for (int i = 0; i < p->n; i++)
             for (int q = 0; q < 3; q++) { c->u_p[i][q] = c->ugp_p[i][q]; c->gp_p[i][q] = c->ugp_p[i][3 + q]; }
     }
+    lap(c, CPL_STAGE_INTERPOLATION, &t);
     for (int i = 0; i < p->n; i++) c->d[i] = 2.0 * p->radius[i];
     particle_volumes(c);   /* a body's spheres share its volume (bodies.h) */
     const cpl_particle_fluid in = {p->n, (const double (*)[3])p->v, c->d, c->volume,
                                    (const double (*)[3])c->u_p, (const double (*)[3])c->gp_p, c->alpha_p, p->fluid_cell};
     cpl_fluid_forces_eval(&c->params, &in, &c->forces);
+    lap(c, CPL_STAGE_DRAG, &t);
 }
 
 /* Into the particle table (which follows the DEM's sorting): the field's parts (u_f, model A's
@@ -449,21 +472,24 @@ void coupling_set_drive(coupling *c, const double drive[3])
 
 void coupling_evolve(coupling *c, const double (*U)[3], const double (*grad_p)[3])
 {
-    double t0 = now();
     evaluate_forces(c, U, grad_p, 1, 0);               /* 1 */
+    double t = dem_clock();
     store_forces(c, !c->exchanged);
-    double t1 = now();
-    c->coupling_seconds += t1 - t0;
+    lap(c, CPL_STAGE_EXCHANGE, &t);
     double fw[3] = {0.0, 0.0, 0.0}, ff[3] = {0.0, 0.0, 0.0};
     for (int w = 0; w < c->s.nwalls; w++) c->each_wall[w][0] = c->each_wall[w][1] = c->each_wall[w][2] = 0.0;
     for (int k = 0; k < c->interval; k++) {            /* 2 */
         apply_fluid_forces(c);   /* implicit: at the current velocity; explicit: frozen (beta 0) */
+        lap(c, CPL_STAGE_EXCHANGE, &t);
         dem_system_step(&c->s);
+        lap(c, CPL_STAGE_DEM, &t);
         for (int q = 0; q < 3; q++) fw[q] += c->s.wall_force[q];
         for (int w = 0; w < c->s.nwalls; w++)
             for (int q = 0; q < 3; q++) c->each_wall[w][q] += c->s.wall_lists[w].force[q];
         add_fluid_force(c, ff);
+        lap(c, CPL_STAGE_OUTPUT, &t);   /* the sums for postProcessing/particles.dat */
     }
+    c->dem_steps += c->interval;
     for (int q = 0; q < 3; q++) {
         c->wall_force[q] = fw[q] / c->interval;
         c->fluid_force[q] = ff[q] / c->interval;
@@ -471,17 +497,18 @@ void coupling_evolve(coupling *c, const double (*U)[3], const double (*grad_p)[3
     for (int w = 0; w < c->s.nwalls; w++)
         for (int q = 0; q < 3; q++) c->each_wall[w][q] /= c->interval;
     dem_system_check_health(&c->s);
-    double t2 = now();
-    c->dem_seconds += t2 - t1;
+    lap(c, CPL_STAGE_DEM, &t);
     update_void_fraction(c);                            /* 3 */
     evaluate_forces(c, U, grad_p, 0, 1);
+    t = dem_clock();
     const cpl_cell_weights w = weights_of(c);
     cpl_exchange_cells(&w, &c->forces, (const double (*)[3])c->s.p.v, c->mesh.ncells, c->mesh.cell_volume,
                        c->ksl, c->up, c->source);
     store_forces(c, 1);
     c->exchanged = 1;
+    lap(c, CPL_STAGE_EXCHANGE, &t);
     write_means(c);
-    c->coupling_seconds += now() - t2;
+    lap(c, CPL_STAGE_OUTPUT, &t);
 }
 
 const double *coupling_alpha(const coupling *c) { return c->vf.alpha; }
@@ -513,6 +540,7 @@ void coupling_write(coupling *c, double time)
      * the same times, and a continued run finds it by the fluid's time within half a DEM step */
     if (fabs(time - c->s.time) > 0.5 * c->s.dt)
         dem_fatal("coupling: particle snapshot asked at t = %g s, but the DEM is at t = %g s", time, c->s.time);
+    double t = dem_clock();
     dem_contact_state cs;
     dem_restart_save_contacts(&c->s, &cs);
     dem_io_write_snapshot_contacts(c->writer, &c->s.p, c->s.time, c->s.step, &cs);
@@ -523,7 +551,9 @@ void coupling_write(coupling *c, double time)
      * void fraction's per-particle weights and cellPoint's tetrahedra made again in that order.
      * The fluid keeps the void fraction it solved with (written with the fields; a continued
      * run reads it back). */
+    lap(c, CPL_STAGE_OUTPUT, &t);
     dem_system_relist(&c->s);
+    lap(c, CPL_STAGE_DEM, &t);
     update_void_fraction(c);
     c->tets_valid = 0;
 }
@@ -533,14 +563,28 @@ int coupling_restarted(const coupling *c) { return c->restarted; }
 void coupling_timings(const coupling *c, double *dem_s, double *coupling_s, double *lifecycle_s)
 {
     *dem_s = c->dem_seconds;
-    *coupling_s = c->coupling_seconds;
-    *lifecycle_s = c->s.lifecycle_seconds;
+    *coupling_s = 0.0;
+    for (int k = 0; k < CPL_STAGE_COUNT; k++) *coupling_s += c->stage_seconds[k];
+    *lifecycle_s = c->s.stage_seconds[DEM_STAGE_LIFECYCLE] + c->s.stage_seconds[DEM_STAGE_LIST_LIFECYCLE];
+}
+
+void coupling_report_timings(coupling *c)
+{
+    double total = 0.0;
+    for (int k = 0; k < CPL_STAGE_COUNT; k++) total += c->stage_seconds[k];
+    dem_info("Coupling time per stage (%.3g s; %% of the coupling's time, us per fluid step of %d DEM steps):", total,
+           c->interval);
+    const long fluid_steps = c->dem_steps / c->interval;
+    for (int k = 0; k < CPL_STAGE_COUNT; k++)
+        dem_info("  %-50s %9.3f s %5.1f %% %9.1f us", cpl_stage_names[k], c->stage_seconds[k],
+               total > 0 ? 100 * c->stage_seconds[k] / total : 0.0,
+               fluid_steps > 0 ? 1e6 * c->stage_seconds[k] / fluid_steps : 0.0);
+    dem_stage_report(&c->s, c->dem_steps);
 }
 
 void coupling_free(coupling *c)
 {
     if (!c) return;
-    dem_info("coupling: wall time DEM %.2f s, coupling %.2f s", c->dem_seconds, c->coupling_seconds);
     dem_io_close_writer(c->writer);
     if (c->means) fclose(c->means);
     free(c->each_wall);

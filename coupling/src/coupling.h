@@ -77,6 +77,9 @@ void coupling_write(coupling *c, double time);
 /* Wall seconds spent so far in the DEM and in the coupling layer; lifecycle_s: the part of dem_s
  * spent in outlets and streams (removal, insertion and the list rebuilds they cause). */
 void coupling_timings(const coupling *c, double *dem_s, double *coupling_s, double *lifecycle_s);
+/* Print the coupling's time per stage (void fraction, interpolation, drag, exchange, output) and
+ * the DEM's per stage and per contact model (dem_stage_report). The DEM's state is left as it was. */
+void coupling_report_timings(coupling *c);
 
 #ifdef __cplusplus
 }

@@ -95,6 +95,17 @@ int main(int argc, char **argv)
     dem_system_init(&s);
     dem_run_settings rs;
     dem_case_read(case_dir, &s, &rs, restart);
+    /* benchmarks (bench/unused_model.sh): the generic force kernels, every model's code present
+     * and dispatched per contact, in place of the case's specialised kernel */
+    const char *generic = getenv("DEM_GENERIC_KERNELS");
+    if (generic && *generic && strcmp(generic, "0") != 0) {
+        if (strcmp(generic, "1") != 0) {
+            fprintf(stderr, "demRun: error: environment variable DEM_GENERIC_KERNELS is '%s'; it must be 0 or 1\n", generic);
+            return 2;
+        }
+        s.generic_kernels = 1;
+        printf("DEM_GENERIC_KERNELS=1: the generic force kernels (every model dispatched per contact)\n");
+    }
 
     char base[4200];
     snprintf(base, sizeof base, "%s/particles", case_dir);
@@ -153,6 +164,7 @@ int main(int argc, char **argv)
     if (s.bodies.n)   /* each body's is in the snapshots */
         printf("multisphere: %d bodies, rotational kinetic energy %.6g J (seed 004 eq. 8, summed over the bodies)\n",
                s.bodies.n, dem_bodies_rotational_energy(&s));
+    dem_stage_report(&s, total_steps);
     dem_system_free(&s);
     return 0;
 }

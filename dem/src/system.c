@@ -67,22 +67,17 @@ static void remake_lists(dem_system *s)
     dem_contacts_scatter_rows(s, &s->carried);
 }
 
-static double wall_seconds(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
-
-/* A rebuild within a step; with `lifecycle`, outlets remove and streams insert first (timed:
- * the removal, the insertion and the rebuild they cause are the run's insertion/removal cost). */
-static void rebuild(dem_system *s, int lifecycle)
+/* A rebuild within a step; with `lifecycle`, outlets remove and streams insert first (the
+ * removal and insertion, and the rebuild they cause, are timed as stages of their own). */
+static void rebuild(dem_system *s, int lifecycle, double *t)
 {
     check_step_motion(s);
-    const double t0 = lifecycle ? wall_seconds() : 0.0;
-    if (lifecycle) dem_lifecycle_apply(s);
+    if (lifecycle) {
+        dem_lifecycle_apply(s);
+        dem_stage_lap(s->stage_seconds, DEM_STAGE_LIFECYCLE, t);
+    }
     remake_lists(s);
-    if (lifecycle) s->lifecycle_seconds += wall_seconds() - t0;
+    dem_stage_lap(s->stage_seconds, lifecycle ? DEM_STAGE_LIST_LIFECYCLE : DEM_STAGE_LIST, t);
 }
 
 /* Each chosen model's derived constants per material pair, and the reach of the normal model
@@ -160,14 +155,23 @@ void dem_system_setup(dem_system *s)
     dem_system_setup_with_contacts(s, NULL, 1);
 }
 
-static void add_contact_forces(dem_system *s)
+/* t: the clock at the start (each stage's time is lapped off it, stage_timer.h) */
+static void add_contact_forces(dem_system *s, double *t)
 {
+    double *secs = s->stage_seconds;
     s->max_overlap_seen = 0.0;
     dem_ghosts_update(s);
+    dem_stage_lap(secs, DEM_STAGE_GHOSTS, t);
     dem_pair_forces_add(s);
+    dem_stage_lap(secs, DEM_STAGE_PAIRS, t);
     dem_ghosts_fold_forces(s);
+    dem_stage_lap(secs, DEM_STAGE_GHOSTS, t);
     dem_walls_add_forces(s);
-    if (s->bodies.n) dem_bodies_sum_forces(s);
+    dem_stage_lap(secs, DEM_STAGE_WALLS, t);
+    if (s->bodies.n) {
+        dem_bodies_sum_forces(s);
+        dem_stage_lap(secs, DEM_STAGE_BODIES, t);
+    }
 }
 
 void dem_system_compute_forces(dem_system *s)
@@ -179,7 +183,8 @@ void dem_system_compute_forces(dem_system *s)
             p->torque[i][d] = 0.0;
         }
     }
-    add_contact_forces(s);
+    double t = dem_clock();
+    add_contact_forces(s, &t);
 }
 
 static void half_kick(dem_particles *p, double dt)
@@ -255,17 +260,31 @@ static int moved_far_since_build(const dem_system *s)
 void dem_system_step(dem_system *s)
 {
     dem_particles *p = &s->p;
+    double *secs = s->stage_seconds, t = dem_clock();
     kick_drift_reset(s);
-    if (s->bodies.n) dem_bodies_kick_drift(s);   /* the bodies' spheres put where their body is */
+    dem_stage_lap(secs, DEM_STAGE_INTEGRATE, &t);
+    if (s->bodies.n) {
+        dem_bodies_kick_drift(s);   /* the bodies' spheres put where their body is */
+        dem_stage_lap(secs, DEM_STAGE_BODIES, &t);
+    }
     const int moved_far = moved_far_since_build(s);
     const int lifecycle = (s->noutlets || s->nstreams) && dem_lifecycle_due(s);   /* particles out or due in */
-    if (dem_walls_move(s, s->time + s->dt) || moved_far || lifecycle) rebuild(s, lifecycle);   /* walls at the step's end */
-    add_contact_forces(s);
+    const int walls_moved = dem_walls_move(s, s->time + s->dt);                   /* walls at the step's end */
+    dem_stage_lap(secs, DEM_STAGE_LIST, &t);
+    if (walls_moved || moved_far || lifecycle) rebuild(s, lifecycle, &t);
+    add_contact_forces(s, &t);
     half_kick(p, s->dt);
-    if (s->bodies.n) dem_bodies_kick(s);
+    dem_stage_lap(secs, DEM_STAGE_INTEGRATE, &t);
+    if (s->bodies.n) {
+        dem_bodies_kick(s);
+        dem_stage_lap(secs, DEM_STAGE_BODIES, &t);
+    }
     s->time += s->dt;
     s->step++;
-    if (s->max_overlap_seen > s->max_overlap_fraction || s->step % 256 == 0) dem_system_check_health(s);
+    if (s->max_overlap_seen > s->max_overlap_fraction || s->step % 256 == 0) {
+        dem_system_check_health(s);
+        dem_stage_lap(secs, DEM_STAGE_CHECKS, &t);
+    }
 }
 
 void dem_system_check_health(const dem_system *s)

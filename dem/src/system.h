@@ -6,6 +6,7 @@
 #include "contact/models.h"
 #include "contacts.h"
 #include "ghosts.h"
+#include "stage_timer.h"
 #include "insert_stream.h"
 #include "lifecycle.h"
 #include "materials.h"
@@ -56,7 +57,7 @@ typedef struct dem_system {
     long step;
     double max_overlap_fraction;      /* stop above this overlap / smaller radius */
     double max_overlap_seen;          /* largest overlap / smaller radius in the last step */
-    double lifecycle_seconds;         /* wall time in outlets and streams and the list rebuilds they cause [s] */
+    double stage_seconds[DEM_STAGE_COUNT];   /* wall time per stage of the step since set-up [s] (stage_timer.h) */
     double wall_force[3];             /* the walls' total force on the particles in the last step [N] */
     int64_t next_id;
 } dem_system;
@@ -87,6 +88,9 @@ double dem_system_kinetic_energy(const dem_system *s);
 
 /* Pair forces (pair_forces.c). */
 void dem_pair_forces_add(dem_system *s);
+/* The DEM's time per stage and, from a probe of the pair kernel, per contact model (stage_report.c):
+ * printed at the end of a run; steps: the run's DEM steps. */
+void dem_stage_report(dem_system *s, long steps);
 /* The descriptor of the model chosen for a slot. */
 static inline const dem_contact_model *system_model(const dem_system *s, enum dem_contact_slot slot)
 {

@@ -346,4 +346,11 @@ void Foam::demCoupling::timings(scalar& demTime, scalar& couplingTime, scalar& l
 }
 
 
+void Foam::demCoupling::reportTimings()
+{
+    Info<< "Adapter time (fields copied between OpenFOAM and the C side): " << adapterTime_ << " s" << endl;
+    coupling_report_timings(session_);
+}
+
+
 // ************************************************************************* //

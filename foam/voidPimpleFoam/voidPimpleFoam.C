@@ -182,8 +182,8 @@ int main(int argc, char *argv[])
 
     Info<< "\nStarting time loop\n" << endl;
 
-    clockTime clock;
-    scalar fluidTime = 0;
+    clockTime clock, stageClock;
+    scalar fluidTime = 0, momentumTime = 0, pressureTime = 0, turbulenceTime = 0;
     const scalar startTime = runTime.value();
     scalar nextProgress = 30;
     label stepi = 0;
@@ -225,10 +225,12 @@ int main(int argc, char *argv[])
 
         clock.timeIncrement();     // (the coupling's time is measured by the C side)
 
-        // --- 2. Pressure-velocity PIMPLE corrector loop
+        // --- 2. Pressure-velocity PIMPLE corrector loop (each part timed for the end-of-run split)
         while (pimple.loop())
         {
+            stageClock.timeIncrement();
             #include "UEqn.H"
+            momentumTime += stageClock.timeIncrement();
 
             // --- Pressure corrector loop
             while (pimple.correct())
@@ -242,6 +244,7 @@ int main(int argc, char *argv[])
                     #include "pEqn.H"
                 }
             }
+            pressureTime += stageClock.timeIncrement();
 
             if (pimple.turbCorr())
             {
@@ -251,6 +254,7 @@ int main(int argc, char *argv[])
                     turbulence->correct();
                 }
             }
+            turbulenceTime += stageClock.timeIncrement();
         }
 
         particleSource = Ksl*(Up - U) + fExplicit;
@@ -312,8 +316,16 @@ int main(int argc, char *argv[])
             << "      of which insertion/removal " << lifeT << " s (" << 100*lifeT/total << " %)" << nl
             << "    coupling  " << cplT << " s (" << 100*cplT/total << " %)" << nl
             << "    fluid     " << fluidTime << " s (" << 100*fluidTime/total << " %)" << nl
+            << "      momentum predictor (UEqn) " << momentumTime << " s (" << 100*momentumTime/total << " %)" << nl
+            << "      pressure correctors (pEqn" << (faceMomentum ? "Face" : "") << ") " << pressureTime
+            << " s (" << 100*pressureTime/total << " %)" << nl
+            << "      turbulence and transport  " << turbulenceTime << " s (" << 100*turbulenceTime/total << " %)" << nl
+            << "      the rest (alpha at the faces, the source, driving gradient) "
+            << fluidTime - momentumTime - pressureTime - turbulenceTime << " s" << nl
             << "    total     " << total << " s (wall, including start-up and output)" << nl
             << endl;
+        coupling.reportTimings();
+        Info<< endl;
     }
 
     Info<< "End\n" << endl;
