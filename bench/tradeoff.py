@@ -23,7 +23,7 @@ reported as such, which is a defect to fix.
 Output: bench/results/tradeoff.csv (one row per run and check), bench/results/<case>.png (the
 Pareto plots), docs/tradeoff.md (the table: per case and knob, each value's time and worst check
 error; the cheapest setting that passes every check, with its speed-up over the reference).
-Usage: tradeoff.py [-quick | -smoke | -extremes] [-j N] [--cases a,b] [--knobs a,b]
+Usage: tradeoff.py [-quick | -smoke | -extremes | -regression] [-j N] [--cases a,b] [--knobs a,b]
 """
 import argparse
 import csv
@@ -246,6 +246,34 @@ def reference_values(case):
             "youngsModulus": float(re.search(r"youngsModulus\s+([0-9.eE+-]+)", dem).group(1)),
             "nCorrectors": number(read(os.path.join(case, "system/fvSolution")), "nCorrectors"),
             "coarseGraining": 1.0}
+
+
+# The extremes as regression points (ctest coupled_extremes, `-regression`): each past a limit the
+# sweep found, with the outcome it must keep: a clean stop with the message that names the cause
+# and what to change, or a check that leaves its tolerance (FAIL with its number), never a crash,
+# a hang or a non-finite value. (case, knob, value, status, pattern the message must match)
+REGRESSION = [
+    ("settling", "dtStrict", 0.25, "STOP", r"demProperties:\d+: error: key 'timeStep'.*too large.*timeStepOverride"),
+    ("settling", "couplingInterval", 20000, "FAIL", None),
+    ("ergun", "dtStrict", 0.25, "STOP", r"demProperties:\d+: error: key 'timeStep'.*too large.*timeStepOverride"),
+    ("ergun", "dt", 1.5, "STOP", r"blew up.*contact overlap.*too long for the contacts.*lower timeStep"),
+    ("ergun", "youngsModulus", 1e4, "STOP", r"overlap.*The time step is not the cause.*too soft.*raise youngsModulus"),
+]
+
+
+def regression(timeout):
+    """Run the REGRESSION points; a CHECK line per point; 0 if every one ends as it must."""
+    failed = 0
+    for name, knob, value, want, pattern in REGRESSION:
+        row = run_one(name, knob, value, timeout)
+        ok = row["status"] == want and (pattern is None or re.search(pattern, row["message"]) is not None)
+        if want == "FAIL":
+            ok = ok and all(math.isfinite(e) for _, e, _, _ in row["checks"] if isinstance(e, float))
+        print(f"CHECK extreme {name} {knob}={value}: {row['status']} (want {want}) in {row['wall']:.1f} s: "
+              f"{row['message'] or f'worst {worst(row):.2f} of tolerance'} {'PASS' if ok else 'FAIL'}", flush=True)
+        failed += not ok
+    print(f"tradeoff -regression: {len(REGRESSION) - failed} of {len(REGRESSION)} extremes end as they must")
+    return 1 if failed else 0
 
 
 SMOKE = {"settling": {"dt": [0.5], "couplingInterval": [200]}}
@@ -493,12 +521,15 @@ def main():
     ap.add_argument("-quick", action="store_true")
     ap.add_argument("-smoke", action="store_true")
     ap.add_argument("-extremes", action="store_true", help="only the points past the sweep (EXTREMES)")
+    ap.add_argument("-regression", action="store_true", help="the REGRESSION points, each checked (ctest)")
     ap.add_argument("-j", type=int, default=min(2, os.cpu_count() or 1))
     ap.add_argument("--cases")
     ap.add_argument("--knobs")
     ap.add_argument("--timeout", type=float, default=1800.0)
     ap.add_argument("--markdown", default=os.path.join(TOP, "docs/tradeoff.md"))
     a = ap.parse_args()
+    if a.regression:
+        return regression(a.timeout)
     sweep = SMOKE if a.smoke else QUICK if a.quick else EXTREMES if a.extremes else \
         {c: {**SWEEP[c], **{k: SWEEP[c].get(k, []) + v for k, v in EXTREMES[c].items()}} for c in SWEEP}
     cases = a.cases.split(",") if a.cases else list(sweep)

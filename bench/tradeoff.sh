@@ -3,10 +3,11 @@
 # case's reference, with wall and CPU time and each check's error; writes
 # bench/results/tradeoff_<full|quick|smoke>.csv, bench/results/<case>.png (Pareto plots) and
 # docs/tradeoff.md (not with -smoke). bench/tradeoff.py says what each knob does.
-# Usage: bench/tradeoff.sh [-quick | -smoke | -extremes] [-j N] [--cases a,b] [--knobs a,b]
+# Usage: bench/tradeoff.sh [-quick | -smoke | -extremes | -regression] [-j N] [--cases a,b] [--knobs a,b]
 #   (full: settling, ergun, fluidisedBed, every knob and the extremes past the sweep; -extremes: only
 #    those; -quick: fewer points, under 10 minutes on
-#    2 cores; -smoke: the settling sphere, three runs, seconds: what ctest runs)
+#    2 cores; -smoke: the settling sphere, three runs, seconds: what ctest runs; -regression: the
+#    extremes ctest keeps, each checked to stop with its message or fail with its number)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 [ -x build/foam/bin/voidPimpleFoam ] || ./Allwmake
