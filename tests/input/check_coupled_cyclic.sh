@@ -101,7 +101,7 @@ ok = worst < 1e-9 and crossed > 5 and len(times) >= 5
 print(f"CHECK the particles' volume mapped in full at every write (1e-9) and particles crossed {'PASS' if ok else 'FAIL'}")
 sys.exit(0 if ok else 1)
 PY
-# column 9: |residual| / max(|pressure|, |particles|) of each step (tutorials/tools/foamcase.py)
+# column 9: |residual| / the largest term of the balance, each step (tutorials/tools/foamcase.py)
 resid=$(awk '!/^#/ && NF >= 9 {r = $9 < 0 ? -$9 : $9; if (r > m) m = r} END {print m + 0}' "$work/channel/postProcessing/momentumBalance.dat")
 check "the gas momentum balance within 1 % at every step (largest relative residual $resid)" \
     "$(awk -v r="$resid" 'BEGIN {print (r < 0.01)}')"

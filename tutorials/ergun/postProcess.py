@@ -57,8 +57,8 @@ Checks, per run (one CHECK line each; exit 1 on a FAIL):
                     bed's pressure drop, 2 % (with the drag in the cells instead of the faces the
                     bed's two end layers lose half their drag, several per cent of the drop);
   <run>_momentum:   the largest relative residual of the gas momentum balance over every fluid
-                    step (postProcessing/momentumBalance.dat: |residual| / max(|pressure drop x
-                    area|, |particles' force|)), 1 %.
+                    step (postProcessing/momentumBalance.dat: |residual| / the balance's largest
+                    term: pressure drop x area, weight, particles' force, acceleration), 1 %.
 With --coarse-graining (Allrun -coarseGraining), each run with coarseGraining > 1 against the
 run with 1:
   <run>_vs_cg1_umf: the measured U_mf (as <run>_umf measures it), 5 %;
@@ -366,7 +366,7 @@ def analyse(run):
                          f"t = {tw:g} s, {nl} bed layers, worst at z = {1e3 * zl:.2f} mm")
 
     # the gas momentum balance at every fluid step (the solver's postProcessing/momentumBalance.dat:
-    # |residual| / max(|pressure|, |particles|)): the pressure drop is the particles' force plus the
+    # |residual| / the largest term): the pressure drop is the particles' force plus the
     # gas's weight and acceleration
     mb = np.loadtxt(os.path.join(run, "postProcessing", "momentumBalance.dat"), comments="#", ndmin=2)
     worst = float(np.abs(mb[:, 8]).max())

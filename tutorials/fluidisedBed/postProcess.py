@@ -15,7 +15,7 @@ Measured, over the statistics window t >= t_stats (the bubbling regime):
       spectrum of dP - mean, f > 0.2 Hz);
   the bed height h = 2 <z> of each snapshot (the height of a uniform bed with the same centre of
       mass) and its time mean; h95, the height below which 95 % of the particles are (printed);
-  the momentum balance's relative residual |residual| / max(|pressure|, |particles|) at every
+  the momentum balance's relative residual |residual| / (its largest term) at every
       fluid step of the run (from t = 0).
 Checks (CHECK lines; exit 1 on a FAIL):
   dP_mean:     mean dP, less the bed's momentum change over the window per area and time
@@ -256,7 +256,7 @@ def draw(case, snaps, t, dp, t_stats, w_a, mean, t_mb, rel, lo, hi):
     ax.semilogy(t_mb, np.maximum(rel, 1e-9), lw=0.3)
     ax.axhline(0.01, color="tab:red", ls="--", lw=1, label="1 %")
     ax.set_xlabel("t [s]")
-    ax.set_ylabel("|residual| / max(|pressure|, |particles|)")
+    ax.set_ylabel("|residual| / largest term of the balance")
     ax.set_title("fluid momentum balance: pressure drop = particles + weight + acceleration", fontsize=9)
     ax.legend(fontsize=8)
     picks = np.unique(np.linspace(0, len(snaps) - 1, 6).round().astype(int))

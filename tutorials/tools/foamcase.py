@@ -230,7 +230,7 @@ def bed_momentum_change(case, bed, t0, t1):
 
 
 def momentum_residual(case):
-    """(time, |residual| / max(|pressure|, |particles|)) of postProcessing/momentumBalance.dat."""
+    """(time, |residual| / the balance's largest term) of postProcessing/momentumBalance.dat."""
     mb = table(os.path.join(case, "postProcessing/momentumBalance.dat"))
     return mb[:, 0], np.abs(mb[:, 8])
 
