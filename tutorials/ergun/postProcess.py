@@ -24,6 +24,8 @@ References (superficial velocity U, bed height L, voidage e; d, rho_f, mu = rho_
   DiFelice:  dP/L = n beta_p U / e^2, n = (1-e)/V_p, beta_p of coupling/src/drag.h (Di Felice 1994)
              with Re_p = rho_f U d / mu (its packed-bed pressure drop; about 12 % below Ergun
              here, by construction);
+  KochHill, Beetstra: the same n beta_p U / e^2 with their beta_p (coupling/src/drag.c; the
+             sweep's drag knob, bench/tradeoff.py);
   weight:    W/A = N V_p (rho_p - rho_f) g / A, the bed's buoyant weight per area;
   U_mf:      the law's packed-bed pressure drop with the voidage of the bed at the start of the ramp
              equals W/A (for Ergun: Wen & Yu's balance with the measured voidage);
@@ -134,7 +136,40 @@ def difelice(U, e, c):
     return n * beta * U / e ** 2
 
 
-LAWS = {"Gidaspow": ergun, "DiFelice": difelice}
+def koch_hill(U, e, c):
+    """Koch & Hill (2001) as in coupling/src/drag.c, its dense branch (solid fraction >= 0.4, which
+    every packed bed here is): F = F0 + F1 Re^2 below Re = F3/F1, else F2 + F3 Re, with
+    F0 = F2 = 10 phi / e^3, F1 = 0.11 + 5.1e-4 exp(11.6 phi), F3 = 0.0673 + 0.212 phi + 0.0232 / e^5
+    and Re = rho_f U d / (2 mu); the bed's pressure gradient is 18 mu phi F U / d^2."""
+    mu, d = c["rho_f"] * c["nu"], c["d"]
+    e = np.asarray(e, dtype=float)
+    phi = 1.0 - e
+    if np.any(phi < 0.4):
+        raise SystemExit("postProcess.py: KochHill's packed-bed reference needs a solid fraction of at least 0.4")
+    f0 = 10.0 * phi / e ** 3
+    f1 = 0.11 + 5.1e-4 * np.exp(11.6 * phi)
+    f3 = 0.0673 + 0.212 * phi + 0.0232 / e ** 5
+    re = c["rho_f"] * np.abs(U) * d / (2.0 * mu)
+    F = np.where(re <= f3 / f1, f0 + f1 * re ** 2, f0 + f3 * re)
+    return 18.0 * mu * phi * F * U / d ** 2
+
+
+def beetstra(U, e, c):
+    """Beetstra, van der Hoef & Kuipers (2007) as in coupling/src/drag.c: F = 10 phi / e^2 +
+    e^2 (1 + 1.5 sqrt(phi)) + 0.413 Re / (24 e^2) (1/e + 3 e phi + 8.4 Re^-0.343) /
+    (1 + 10^(3 phi) Re^-(1 + 4 phi)/2), Re = rho_f U d / mu; beta_p = 3 pi mu d e F, and the
+    bed's pressure gradient n beta_p U / e^2 = 18 mu phi F U / (e d^2)."""
+    mu, d = c["rho_f"] * c["nu"], c["d"]
+    e = np.asarray(e, dtype=float)
+    phi = 1.0 - e
+    re = np.maximum(c["rho_f"] * np.abs(U) * d / mu, 1e-300)
+    F = (10.0 * phi / e ** 2 + e ** 2 * (1.0 + 1.5 * np.sqrt(phi))
+         + 0.413 * re / (24.0 * e ** 2) * (1.0 / e + 3.0 * e * phi + 8.4 * re ** -0.343)
+         / (1.0 + 10.0 ** (3.0 * phi) * re ** (-0.5 * (1.0 + 4.0 * phi))))
+    return 18.0 * mu * phi * F * U / (e * d ** 2)
+
+
+LAWS = {"Gidaspow": ergun, "DiFelice": difelice, "KochHill": koch_hill, "Beetstra": beetstra}
 
 
 def solve_umf(dpdz, e, L, target, c):
