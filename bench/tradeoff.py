@@ -402,6 +402,31 @@ def write_csv(rows, path):
                             f"{r['cpu']:.1f}", *c, r["message"]])
 
 
+def read_csv(path):
+    """The rows of a sweep's CSV (write_csv's layout) back; the reference's knob values from its
+    case directory, if it is still there."""
+    rows, by = [], {}
+    with open(path, newline="") as f:
+        for rec in csv.DictReader(f):
+            key = (rec["case"], rec["knob"], rec["value"])
+            if key not in by:
+                by[key] = dict(case=rec["case"], knob=rec["knob"], value=rec["value"], setting=rec["setting"],
+                               status=rec["status"], message=rec["message"], wall=float(rec["wall_s"]),
+                               cpu=float(rec["cpu_s"]), checks=[])
+                rows.append(by[key])
+            if rec["check"]:
+                try:
+                    tol = float(rec["tolerance"])
+                except ValueError:
+                    tol = rec["tolerance"]
+                by[key]["checks"].append((rec["check"], float(rec["error"]), tol, rec["verdict"]))
+    for r in rows:
+        ref_case = os.path.join(WORK, r["case"], "reference")
+        if r["knob"] == "reference" and os.path.isdir(ref_case):
+            r["refvals"] = reference_values(ref_case)
+    return rows
+
+
 def pareto_plot(name, rows, path):
     import matplotlib
     matplotlib.use("Agg")
@@ -527,6 +552,9 @@ def main():
     ap.add_argument("--knobs")
     ap.add_argument("--timeout", type=float, default=1800.0)
     ap.add_argument("--markdown", default=os.path.join(TOP, "docs/tradeoff.md"))
+    ap.add_argument("--update", action="store_true",
+                    help="run only what --cases/--knobs select (no reference unless --knobs names it) and "
+                         "replace those rows in the sweep's CSV; the table and plots from all rows")
     a = ap.parse_args()
     if a.regression:
         return regression(a.timeout)
@@ -535,7 +563,8 @@ def main():
     cases = a.cases.split(",") if a.cases else list(sweep)
     jobs = []
     for name in cases:
-        jobs.append((name, None, None))
+        if not a.update or (a.knobs and "reference" in a.knobs.split(",")):
+            jobs.append((name, None, None))
         for knob, values in sweep[name].items():
             if a.knobs and knob not in a.knobs.split(","):
                 continue
@@ -552,11 +581,18 @@ def main():
                   + (f"  ({row['message']})" if row["message"] else ""), flush=True)
     os.makedirs(RESULTS, exist_ok=True)
     tag = "smoke" if a.smoke else "quick" if a.quick else "extremes" if a.extremes else "full"
-    write_csv(rows, os.path.join(RESULTS, f"tradeoff_{tag}.csv"))
+    csv_path = os.path.join(RESULTS, f"tradeoff_{tag}.csv")
+    if a.update and os.path.exists(csv_path):   # the new rows in place of the old ones, in the old order
+        new = {(r["case"], r["knob"], r["value"]): r for r in rows}
+        old = read_csv(csv_path)
+        rows = [new.pop((r["case"], r["knob"], r["value"]), r) for r in old] + list(new.values())
+        cases = list(dict.fromkeys(r["case"] for r in rows))
+    write_csv(rows, csv_path)
     for name in cases:
         pareto_plot(name, [r for r in rows if r["case"] == name], os.path.join(RESULTS, f"{name}.png"))
     if not a.smoke:
-        write_markdown(rows, a.markdown, "bench/tradeoff.sh" + (" -quick" if a.quick else " -extremes" if a.extremes else ""))
+        write_markdown(rows, a.markdown, "bench/tradeoff.sh" + (" -quick" if a.quick else " -extremes" if a.extremes else "")
+                       + (f" (then --update {' '.join(sys.argv[1:])})" if a.update else ""))
     print(f"tradeoff: {time.time() - t0:.0f} s wall; bench/results/tradeoff_{tag}.csv"
           + ("" if a.smoke else f", {os.path.relpath(a.markdown, TOP)}"))
     bad = [r for r in rows if r["status"] in ("CRASH", "HANG", "NONFINITE", "ERROR")]
