@@ -7,6 +7,8 @@ Cases (each made by its tutorial's Allrun, so the reference here is the tutorial
   settling      tutorials/settling, 0.1 s (one sphere; terminal velocity and the curve)
   ergun         tutorials/ergun -short-case (Gidaspow, centre; the ramp through U_mf)
   fluidisedBed  tutorials/fluidisedBed -short-case (the short Goldschmidt bed, 1.5 s)
+  muellerBed    tutorials/muellerBed -short-case (U 0.6 m/s, Gidaspow, centre; 1.5 s, statistics from 0.5 s)
+  verticalConveying  tutorials/verticalConveying -short-case (10 m/s, 40 kg/(m^2 s), 0.3 s): the conveying case
 Knobs (a run changes one; the rest stay at the case's reference):
   dt            the DEM step as a fraction of the Rayleigh time of the smallest particle; the
                 fluid step is kept (couplingInterval = round(deltaT / dt), dt = deltaT / interval);
@@ -199,6 +201,12 @@ CASES = {
     "ergun": dict(make=make_by_allrun("ergun", "-short-case"),
                   post=[sys.executable, os.path.join(TUT, "ergun/postProcess.py"), "."], cg=True),
     "fluidisedBed": dict(make=make_by_allrun("fluidisedBed", "-short-case"), staged=True, cg=True),
+    "muellerBed": dict(make=make_by_allrun("muellerBed", "-short-case"), cg=False,
+                       post=[sys.executable, os.path.join(TUT, "muellerBed/postProcess.py"), "0.5", "."]),
+    "verticalConveying": dict(make=make_by_allrun("verticalConveying", "-short-case"), cg=False,
+                              pre=[["postProcess", "-func", "writeCellCentres", "-time", "0"],
+                                   ["postProcess", "-func", "writeCellVolumes", "-time", "0"]],
+                              post=[sys.executable, os.path.join(TUT, "verticalConveying/postProcess.py"), ".", "0.15"]),
 }
 
 # the values of each knob per case (the reference's own value is not repeated: it is the
@@ -221,6 +229,14 @@ SWEEP = {
         "coarseGraining": [1, 2, 3, 4], "tangential": ["none"],
     },
 }
+SWEEP["muellerBed"] = {
+    "dt": [0.3, 0.5], "couplingInterval": [8, 100], "youngsModulus": [1e6], "voidFraction": ["divided"],
+    "drag": ["DiFelice"], "nCorrectors": [1],
+}
+SWEEP["verticalConveying"] = {   # its step is at the check's limit already (0.16 T_R)
+    "dt": [0.1, 0.3], "couplingInterval": [5, 50], "voidFraction": ["divided"], "interpolation": ["cellPoint"],
+    "nCorrectors": [3],
+}
 QUICK = {
     "settling": {"dt": [0.5], "couplingInterval": [1, 200], "drag": ["Beetstra"]},
     "ergun": {"dt": [0.3], "couplingInterval": [100], "voidFraction": ["divided"], "coarseGraining": [2]},
@@ -233,6 +249,8 @@ EXTREMES = {
     "ergun": {"dt": [0.7, 1.0, 1.5], "couplingInterval": [500, 1000], "youngsModulus": [1e4, 1e3],
               "dtStrict": [0.25]},
     "fluidisedBed": {"dt": [0.7, 1.0, 1.5], "couplingInterval": [200, 500, 1000], "youngsModulus": [1e4, 1e3]},
+    "muellerBed": {"dt": [1.0], "couplingInterval": [400]},
+    "verticalConveying": {"dt": [1.0], "couplingInterval": [200]},
 }
 # knobs with an order, for the extremes table; their values in the reference case
 ORDERED = ("dt", "dtStrict", "couplingInterval", "youngsModulus", "nCorrectors", "coarseGraining")
@@ -283,7 +301,7 @@ def commands(name, case):
     spec = CASES[name]
     if spec.get("staged"):
         return [[os.path.join(TUT, "fluidisedBed/Allrun"), "-run-case", case, "0.6", "report"]]
-    return [["blockMesh"], [SOLVER], spec["post"]]
+    return [["blockMesh"], *spec.get("pre", []), [SOLVER], spec["post"]]
 
 
 def stop_message(out, code):
@@ -561,9 +579,13 @@ def main():
     sweep = SMOKE if a.smoke else QUICK if a.quick else EXTREMES if a.extremes else \
         {c: {**SWEEP[c], **{k: SWEEP[c].get(k, []) + v for k, v in EXTREMES[c].items()}} for c in SWEEP}
     cases = a.cases.split(",") if a.cases else list(sweep)
+    tag = "smoke" if a.smoke else "quick" if a.quick else "extremes" if a.extremes else "full"
+    csv_path = os.path.join(RESULTS, f"tradeoff_{tag}.csv")
+    have_ref = {r["case"] for r in read_csv(csv_path) if r["knob"] == "reference"} \
+        if a.update and os.path.exists(csv_path) else set()
     jobs = []
     for name in cases:
-        if not a.update or (a.knobs and "reference" in a.knobs.split(",")):
+        if not a.update or name not in have_ref or (a.knobs and "reference" in a.knobs.split(",")):
             jobs.append((name, None, None))
         for knob, values in sweep[name].items():
             if a.knobs and knob not in a.knobs.split(","):
@@ -580,8 +602,6 @@ def main():
                   f"{row['wall']:7.1f} s wall {row['cpu']:7.1f} s CPU  worst {worst(row):.2f}  {row['setting']}"
                   + (f"  ({row['message']})" if row["message"] else ""), flush=True)
     os.makedirs(RESULTS, exist_ok=True)
-    tag = "smoke" if a.smoke else "quick" if a.quick else "extremes" if a.extremes else "full"
-    csv_path = os.path.join(RESULTS, f"tradeoff_{tag}.csv")
     if a.update and os.path.exists(csv_path):   # the new rows in place of the old ones, in the old order
         new = {(r["case"], r["knob"], r["value"]): r for r in rows}
         old = read_csv(csv_path)

@@ -86,12 +86,15 @@ def compare(y, a, exp):
 def main():
     t_stats = float(sys.argv[1])
     runs = sys.argv[2:]
-    os.makedirs(os.path.join(here, "profiles"), exist_ok=True)
+    os.makedirs("profiles", exist_ok=True)   # in the working directory: the tutorial's (Allrun), a sweep's case
     checks = fc.Checks()
     results = {}
     for run in runs:
         name = os.path.basename(os.path.normpath(run))
-        u = float(re.match(r"U([0-9.]+)_", name).group(1))
+        # the gas velocity: from the variant's name (U0.6_...), else the case's inlet (a sweep's case)
+        m = re.match(r"U([0-9.]+)_", name) or re.search(r"inletVelocity\s+uniform\s+\(0 0 ([0-9.eE+-]+)\)",
+                                                        open(os.path.join(run, "0", "U")).read())
+        u = float(m.group(1))
         bed = fc.case_bed(run, "seeds")
         w_a = bed["v_p"] * (bed["rho_p"] - bed["rho_f"]) * bed["g"] / bed["area"]
         t, dp = fc.bed_pressure_drop(run, bed)
@@ -112,7 +115,7 @@ def main():
         checks.at_most(f"{name}_exchange_percent", 100 * abs(pb["given"] / pb["fluid"] - 1), TOL_EXCHANGE)
         for z in LINES:
             y, a = prof[z]
-            out = os.path.join(here, "profiles", f"{name}_z{z:g}.dat")
+            out = os.path.join("profiles", f"{name}_z{z:g}.dat")
             np.savetxt(out, np.column_stack([y, a]), fmt="%.6f",
                        header=f"muellerBed {name}: time-mean void fraction (alphaMean, {t_stats:g} - {tw:g} s) across the "
                               f"width at z = {z:g} mm, averaged over the depth\ny [mm] from the left wall, void fraction [-]")
@@ -140,7 +143,7 @@ def draw(results):
             for name, (ur, prof) in sorted(results.items()):
                 if ur == u:
                     y, a = prof[z]
-                    ax.plot(y, a, "-", marker=".", label=name.split("_", 1)[1].replace("_", ", "))
+                    ax.plot(y, a, "-", marker=".", label=(name.split("_", 1) + [name])[1].replace("_", ", "))
             ax.set_xlim(0, 44)
             ax.set_ylim(0.3, 0.9)
             ax.set_title(f"U = {u:g} m/s, z = {z:g} mm", fontsize=10)
@@ -149,7 +152,7 @@ def draw(results):
             ax.legend(fontsize=7)
     fig.suptitle("muellerBed: time-mean void fraction across the bed at the MR lines", fontsize=11)
     fig.tight_layout()
-    out = os.path.join(here, "muellerBed.png")
+    out = "muellerBed.png"
     fig.savefig(out, dpi=110)
     print(f"wrote {out}")
 
