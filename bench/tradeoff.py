@@ -141,8 +141,11 @@ def knob_coupling_key(key, sub=False):
 
 
 def knob_fv(key):
+    """A PIMPLE key of system/fvSolution; added to PIMPLE where the case leaves it at its default."""
     def apply(case, value):
-        edit(os.path.join(case, "system/fvSolution"), r"^(\s*" + key + r"\s+)\w+;", r"\g<1>" + str(value) + ";", 1)
+        path = os.path.join(case, "system/fvSolution")
+        if not edit(path, r"^(\s*" + key + r"\s+)\w+;", r"\g<1>" + str(value) + ";", 1, required=False):
+            edit(path, r"^(PIMPLE\s*\{)", r"\1\n    " + key + " " + str(value) + ";", 1)
         return str(value)
     return apply
 
