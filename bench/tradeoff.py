@@ -396,7 +396,10 @@ def run_one(name, knob, value, timeout):
         if not math.isfinite(measured):
             status = "NONFINITE"
     if status == "PASS":
-        if not row["checks"]:
+        said = [l.strip() for l in out.splitlines() if l.startswith("postProcess.py:")]
+        if not row["checks"] and said:   # the check itself refused the run, and said why
+            status, row["message"] = "STOP", said[-1][:420]
+        elif not row["checks"]:
             status, row["message"] = "ERROR", "no CHECK lines"
         elif any(c[3] == "FAIL" for c in row["checks"]):
             status = "FAIL"

@@ -126,7 +126,8 @@ def main():
     t, dp = fc.bed_pressure_drop(case, bed)
     win = t >= t_stats - 1e-12
     if win.sum() < 100:
-        raise SystemExit(f"postProcess.py: the run ends at t = {t[-1]:g} s, too soon after t_stats = {t_stats:g} s")
+        raise SystemExit(f"postProcess.py: {win.sum()} fluid steps from t_stats = {t_stats:g} s to the run's end at "
+                         f"t = {t[-1]:g} s; the statistics need at least 100 (a longer run or a shorter fluid step)")
     dpw = dp[win]
     dt = np.median(np.diff(t[win]))
     # the standard deviation of dP averaged over 10 ms (bubbles pass in tenths of a second; the
