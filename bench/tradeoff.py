@@ -626,6 +626,7 @@ def main():
     ap.add_argument("-j", type=int, default=min(2, os.cpu_count() or 1))
     ap.add_argument("--cases")
     ap.add_argument("--knobs")
+    ap.add_argument("--values", help="only these values of the knobs (with --update: re-run single points)")
     ap.add_argument("--timeout", type=float, default=1800.0)
     ap.add_argument("--markdown", default=os.path.join(TOP, "docs/tradeoff.md"))
     ap.add_argument("--combine", action="store_true",
@@ -651,7 +652,7 @@ def main():
         for knob, values in sweep[name].items():
             if a.knobs and knob not in a.knobs.split(","):
                 continue
-            jobs += [(name, knob, v) for v in values]
+            jobs += [(name, knob, v) for v in values if not a.values or str(v) in a.values.split(",")]
     print(f"tradeoff: {len(jobs)} runs, {a.j} at a time")
     from concurrent.futures import ThreadPoolExecutor
     rows = []
