@@ -279,6 +279,9 @@ REGRESSION = [
     ("ergun", "dtStrict", 0.25, "STOP", r"demProperties:\d+: error: key 'timeStep'.*too large.*timeStepOverride"),
     ("ergun", "dt", 1.5, "STOP", r"blew up.*contact overlap.*too long for the contacts.*lower timeStep"),
     ("ergun", "youngsModulus", 1e4, "STOP", r"overlap.*The time step is not the cause.*too soft.*raise youngsModulus"),
+    ("ergun", "coarseGraining", 4, "STOP", r"demProperties:\d+: error: insertion 'pour': placed only \d+ particles"),
+    ("fluidisedBed", "youngsModulus", 1e6, "STOP", r"overlap.*The time step is not the cause.*too soft.*raise youngsModulus"),
+    ("fluidisedBed", "dt", 1.0, "STOP", r"blew up.*contact overlap.*too long for the contacts.*lower timeStep"),
 ]
 
 
