@@ -689,7 +689,7 @@ def main():
         pareto_plot(name, [r for r in rows if r["case"] == name], os.path.join(RESULTS, f"{name}.png"))
     if not a.smoke:
         write_markdown(rows, a.markdown, "bench/tradeoff.sh" + (" -quick" if a.quick else " -extremes" if a.extremes else "")
-                       + (f" (then --update {' '.join(sys.argv[1:])})" if a.update else ""))
+                       + (" (with points re-run by --update)" if a.update else ""))
     print(f"tradeoff: {time.time() - t0:.0f} s wall; bench/results/tradeoff_{tag}.csv"
           + ("" if a.smoke else f", {os.path.relpath(a.markdown, TOP)}"))
     bad = [r for r in rows if r["status"] in ("CRASH", "HANG", "NONFINITE", "ERROR")]
