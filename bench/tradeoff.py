@@ -411,7 +411,11 @@ def run_one(name, knob, value, timeout):
 
 
 def parse_value(v):
+    """A CSV value back as the knob takes it: an integer stays one (OpenFOAM's nCorrectors
+    refuses 3.0), a number becomes a float, a name stays a string."""
     try:
+        if re.fullmatch(r"[-+]?[0-9]+", v):
+            return int(v)
         return float(v) if re.fullmatch(r"[-+0-9.eE]+", v) else v
     except ValueError:
         return v
