@@ -511,12 +511,12 @@ def pareto_plot(name, rows, path):
     import matplotlib.pyplot as plt
     fig, ax = plt.subplots(figsize=(9, 5))
     knobs = sorted({r["knob"] for r in rows})
-    colours = plt.cm.tab10(np.linspace(0, 1, 10))
+    colours = plt.cm.tab20(np.linspace(0, 1, 20))   # more knobs than tab10 has colours
     for k, knob in enumerate(knobs):
         pts = [r for r in rows if r["knob"] == knob and math.isfinite(r["wall"]) and r["checks"]]
         if not pts:
             continue
-        ax.scatter([r["wall"] for r in pts], [max(worst(r), 1e-3) for r in pts], color=colours[k % 10],
+        ax.scatter([r["wall"] for r in pts], [max(worst(r), 1e-3) for r in pts], color=colours[(2 * k) % 20 + (2 * k) // 20 % 2],
                    marker="*" if knob == "reference" else "o", s=90 if knob == "reference" else 30, label=knob)
         for r in pts:
             ax.annotate(r["value"], (r["wall"], max(worst(r), 1e-3)), fontsize=6, xytext=(3, 2),
