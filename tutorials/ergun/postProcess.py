@@ -78,6 +78,9 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
+import foamcase as fc  # noqa: E402
+
 SLAB = (0.2, 0.8)          # the bed's bulk, as fractions of its height
 BRANCH = (0.2, 0.75)       # packed-bed points, as fractions of U_mf,ref
 PLATEAU = 1.3              # fluidised points: U >= PLATEAU U_mf,ref
@@ -136,24 +139,6 @@ def difelice(U, e, c):
     return n * beta * U / e ** 2
 
 
-def koch_hill(U, e, c):
-    """Koch & Hill (2001) as in coupling/src/drag.c, its dense branch (solid fraction >= 0.4, which
-    every packed bed here is): F = F0 + F1 Re^2 below Re = F3/F1, else F2 + F3 Re, with
-    F0 = F2 = 10 phi / e^3, F1 = 0.11 + 5.1e-4 exp(11.6 phi), F3 = 0.0673 + 0.212 phi + 0.0232 / e^5
-    and Re = rho_f U d / (2 mu); the bed's pressure gradient is 18 mu phi F U / d^2."""
-    mu, d = c["rho_f"] * c["nu"], c["d"]
-    e = np.asarray(e, dtype=float)
-    phi = 1.0 - e
-    if np.any(phi < 0.4):
-        raise SystemExit("postProcess.py: KochHill's packed-bed reference needs a solid fraction of at least 0.4")
-    f0 = 10.0 * phi / e ** 3
-    f1 = 0.11 + 5.1e-4 * np.exp(11.6 * phi)
-    f3 = 0.0673 + 0.212 * phi + 0.0232 / e ** 5
-    re = c["rho_f"] * np.abs(U) * d / (2.0 * mu)
-    F = np.where(re <= f3 / f1, f0 + f1 * re ** 2, f0 + f3 * re)
-    return 18.0 * mu * phi * F * U / d ** 2
-
-
 def beetstra(U, e, c):
     """Beetstra, van der Hoef & Kuipers (2007) as in coupling/src/drag.c: F = 10 phi / e^2 +
     e^2 (1 + 1.5 sqrt(phi)) + 0.413 Re / (24 e^2) (1/e + 3 e phi + 8.4 Re^-0.343) /
@@ -169,7 +154,7 @@ def beetstra(U, e, c):
     return 18.0 * mu * phi * F * U / (e * d ** 2)
 
 
-LAWS = {"Gidaspow": ergun, "DiFelice": difelice, "KochHill": koch_hill, "Beetstra": beetstra}
+LAWS = {"Gidaspow": ergun, "DiFelice": difelice, "KochHill": fc.koch_hill, "Beetstra": beetstra}
 
 
 def solve_umf(dpdz, e, L, target, c):

@@ -81,21 +81,6 @@ def mesh_height(run):
     return max(z) - min(z)
 
 
-def koch_hill(U, e, c):
-    """The packed bed's pressure gradient [Pa/m] by KochHill (coupling/src/drag.h, dense branch)."""
-    mu, d = c["rho_f"] * c["nu"], c["d"]
-    e = np.asarray(e, dtype=float)
-    phi = 1.0 - e
-    if np.any(phi < 0.4):
-        raise SystemExit("postProcess.py: a solid fraction below 0.4, off the dense branch this check uses")
-    f0 = 10.0 * phi / e ** 3
-    f1 = 0.11 + 5.1e-4 * np.exp(11.6 * phi)
-    f3 = 0.0673 + 0.212 * phi + 0.0232 / e ** 5
-    re = c["rho_f"] * np.abs(U) * d / (2.0 * mu)
-    F = np.where(re <= f3 / f1, f0 + f1 * re ** 2, f0 + f3 * re)
-    return 18.0 * mu * phi * F * U / d ** 2
-
-
 def ergun(U, e, c, d):
     mu = c["rho_f"] * c["nu"]
     return 150.0 * mu * (1 - e) ** 2 * U / (e ** 3 * d ** 2) + 1.75 * (1 - e) * c["rho_f"] * U ** 2 / (e ** 3 * d)
@@ -164,7 +149,7 @@ def main(run):
     L0, e0 = beds[k0, 1], beds[k0, 2]
     if not np.isfinite(L0):
         raise SystemExit(f"postProcess.py: no settled bed in the snapshot before the ramp (t = {beds[k0, 0]:g} s)")
-    umf_ref = solve(lambda u: koch_hill(u, e0, c) * L0, W)
+    umf_ref = solve(lambda u: fc.koch_hill(u, e0, c) * L0, W)
     # the law at the superficial slip U - v_p: the bed is not at rest on this branch (the soft
     # parcels' contacts unload as the drag grows and the bed rises, v_p 0.2-0.4 of U), and with
     # both phases incompressible the volume flux through a section is U = alpha u + (1 - alpha) v_p,
@@ -172,11 +157,11 @@ def main(run):
     sel = (U >= BRANCH[0] * umf_ref) & (U <= BRANCH[1] * umf_ref)
     pm = fc.table(os.path.join(run, "postProcessing/particles.dat"))
     v_p = np.interp(t, pm[:, 0], pm[:, 7])
-    ref = koch_hill(U[sel] - v_p[sel], e_t[sel], c) * L_t[sel]
+    ref = fc.koch_hill(U[sel] - v_p[sel], e_t[sel], c) * L_t[sel]
     k = float((dP[sel] * ref).sum() / (ref * ref).sum())
-    ref_u = koch_hill(U[sel], e_t[sel], c) * L_t[sel]
+    ref_u = fc.koch_hill(U[sel], e_t[sel], c) * L_t[sel]
     k_fixed = float((dP[sel] * ref_u).sum() / (ref_u * ref_u).sum())
-    ref_mid = koch_hill(0.5 * umf_ref, e0, c) * L0
+    ref_mid = fc.koch_hill(0.5 * umf_ref, e0, c) * L0
     checks.relative("bed", k * ref_mid, ref_mid, TOL_BED, f"{sel.sum()} fluid steps, U {U[sel][0]:.4f}-{U[sel][-1]:.4f} m/s, "
                     f"law at U - v_p (v_p/U {float((v_p[sel] / U[sel]).mean()):.2f} on average)")
 
@@ -222,7 +207,7 @@ def draw(run, t, U, dP, sel, fl, k, W, umf, umf_ref, u_parcel, e0, L0, c):
     ramp = U > 0
     ax.plot(U[ramp], dP[ramp], lw=0.8, color="tab:blue", label="voidPimpleFoam + DEM, coarseGraining 2")
     u = np.linspace(0, umf_ref, 100)
-    ax.plot(u, koch_hill(u, e0, c) * L0, "k--", lw=1, label=f"KochHill, primaries, voidage {e0:.3f}")
+    ax.plot(u, fc.koch_hill(u, e0, c) * L0, "k--", lw=1, label=f"KochHill, primaries, voidage {e0:.3f}")
     ud = np.linspace(0, 1.2 * u_parcel, 100)
     ax.plot(ud, ergun(ud, e0, c, c["cg"] * c["d"]) * L0, ":", color="tab:red", lw=1,
             label="Ergun with the parcels' diameter (no coarse graining in the drag)")

@@ -257,3 +257,23 @@ def particle_balance(case, bed, t0):
     weight = mass * bed["g"]
     return {"fluid": fluid, "walls": walls, "weight": weight, "accel": accel,
             "residual": fluid + walls - weight - accel, "given": given}
+
+
+# --- drag laws' packed-bed pressure gradients (the tutorials' references) -------------------
+def koch_hill(U, e, c):
+    """The packed bed's pressure gradient [Pa/m] by Koch & Hill (2001) as in coupling/src/drag.c,
+    its dense branch (solid fraction >= 0.4, which every packed bed here is); c: rho_f, nu, d.
+    F = F0 + F1 Re^2 below Re = F3/F1, else F2 + F3 Re, with
+    F0 = F2 = 10 phi / e^3, F1 = 0.11 + 5.1e-4 exp(11.6 phi), F3 = 0.0673 + 0.212 phi + 0.0232 / e^5
+    and Re = rho_f U d / (2 mu); the bed's pressure gradient is 18 mu phi F U / d^2."""
+    mu, d = c["rho_f"] * c["nu"], c["d"]
+    e = np.asarray(e, dtype=float)
+    phi = 1.0 - e
+    if np.any(phi < 0.4):
+        raise SystemExit("postProcess.py: KochHill's packed-bed reference (its dense branch) needs a solid fraction of at least 0.4")
+    f0 = 10.0 * phi / e ** 3
+    f1 = 0.11 + 5.1e-4 * np.exp(11.6 * phi)
+    f3 = 0.0673 + 0.212 * phi + 0.0232 / e ** 5
+    re = c["rho_f"] * np.abs(U) * d / (2.0 * mu)
+    F = np.where(re <= f3 / f1, f0 + f1 * re ** 2, f0 + f3 * re)
+    return 18.0 * mu * phi * F * U / d ** 2
