@@ -560,25 +560,30 @@ void coupling_write(coupling *c, double time)
 
 int coupling_restarted(const coupling *c) { return c->restarted; }
 
+static double coupling_seconds(const coupling *c)
+{
+    double total = 0.0;
+    for (int k = 0; k < CPL_STAGE_COUNT; k++) total += c->stage_seconds[k];
+    return total;
+}
+
 void coupling_timings(const coupling *c, double *dem_s, double *coupling_s, double *lifecycle_s)
 {
     *dem_s = c->dem_seconds;
-    *coupling_s = 0.0;
-    for (int k = 0; k < CPL_STAGE_COUNT; k++) *coupling_s += c->stage_seconds[k];
+    *coupling_s = coupling_seconds(c);
     *lifecycle_s = c->s.stage_seconds[DEM_STAGE_LIFECYCLE] + c->s.stage_seconds[DEM_STAGE_LIST_LIFECYCLE];
 }
 
 void coupling_report_timings(coupling *c)
 {
-    double total = 0.0;
-    for (int k = 0; k < CPL_STAGE_COUNT; k++) total += c->stage_seconds[k];
+    const double total = coupling_seconds(c);
     dem_info("Coupling time per stage (%.3g s; %% of the coupling's time, us per fluid step of %d DEM steps):", total,
-           c->interval);
+             c->interval);
     const long fluid_steps = c->dem_steps / c->interval;
     for (int k = 0; k < CPL_STAGE_COUNT; k++)
         dem_info("  %-50s %9.3f s %5.1f %% %9.1f us", cpl_stage_names[k], c->stage_seconds[k],
-               total > 0 ? 100 * c->stage_seconds[k] / total : 0.0,
-               fluid_steps > 0 ? 1e6 * c->stage_seconds[k] / fluid_steps : 0.0);
+                 total > 0 ? 100 * c->stage_seconds[k] / total : 0.0,
+                 fluid_steps > 0 ? 1e6 * c->stage_seconds[k] / fluid_steps : 0.0);
     dem_stage_report(&c->s, c->dem_steps);
 }
 

@@ -99,8 +99,6 @@ static int split_pair(const dem_material_table *t, const char *key, int *a, int 
     return 0;
 }
 
-static const char *const slot_names[SLOT_COUNT] = {"normal", "tangential", "cohesion", "rolling", "surface"};
-
 /* The chosen models' parameters of one interaction, per slot, from the entry e, else from the
  * 'default' entry def, else the model's fallback (NAN: required); then each model's check. */
 static void read_model_values(const dem_dict *e, const dem_dict *def, const dem_contact_models *m,
@@ -114,7 +112,7 @@ static void read_model_values(const dem_dict *e, const dem_dict *def, const dem_
             const dem_dict *src = dem_dict_has(e, mp->key) ? e : def && dem_dict_has(def, mp->key) ? def : NULL;
             if (!src && isnan(mp->fallback))
                 dem_dict_fatal_here(e, "the %s %s model needs '%s' [%s] in this interaction (or in 'default')",
-                                md->name, slot_names[slot], mp->key, mp->unit);
+                                md->name, dem_contact_slot_names[slot], mp->key, mp->unit);
             values[slot][mp->offset / sizeof(double)] = src ? dem_dict_scalar(src, mp->key, mp->lo, mp->hi) : mp->fallback;
         }
         const char *key, *message = md->check ? md->check(values[slot], &key) : NULL;
@@ -176,15 +174,14 @@ static void read_models(const dem_dict *root, dem_system *s)
 {
     const dem_dict *d = dem_dict_sub(root, "contactModels");
     dem_contact_models *m = &s->models;
-    int *const ids[SLOT_COUNT] = {&m->normal, &m->tangential, &m->cohesion, &m->rolling, &m->surface};
     for (int slot = 0; slot < SLOT_COUNT; slot++)
-        *ids[slot] = slot == SLOT_NORMAL || slot == SLOT_TANGENTIAL
-            ? dem_dict_choice(d, slot_names[slot], dem_contact_model_names(slot))
-            : dem_dict_choice_opt(d, slot_names[slot], dem_contact_model_names(slot), 0);
+        *contact_model_id_ref(m, slot) = slot == SLOT_NORMAL || slot == SLOT_TANGENTIAL
+            ? dem_dict_choice(d, dem_contact_slot_names[slot], dem_contact_model_names(slot))
+            : dem_dict_choice_opt(d, dem_contact_slot_names[slot], dem_contact_model_names(slot), 0);
     const int limit_default = dem_contact_model_get(SLOT_NORMAL, m->normal)->limit_force_default;
     m->fn_floor = dem_dict_bool_opt(d, "limitForce", limit_default) ? 0.0 : -INFINITY;
     for (int slot = 0; slot < SLOT_COUNT; slot++) {
-        const dem_contact_model *md = dem_contact_model_get(slot, *ids[slot]);
+        const dem_contact_model *md = dem_contact_model_get(slot, contact_model_id(m, slot));
         if (md->read_case) md->read_case(d, m->values[slot]);
     }
 }
@@ -207,7 +204,7 @@ static void check_coarse_graining(const dem_dict *root, const dem_system *s)
         if (md->coarse_graining_refused)
             dem_dict_fatal(root, "coarseGraining", "%g: the %s model '%s' does not hold for coarse-grained parcels: %s. "
                            "Use coarseGraining 1, or a model that holds (docs/models/coarse_graining.md)",
-                           cg, slot_names[slot], md->name, md->coarse_graining_refused);
+                           cg, dem_contact_slot_names[slot], md->name, md->coarse_graining_refused);
     }
     if (s->bodies.ntemplates > 0)
         dem_dict_fatal(root, "coarseGraining", "%g: multisphere templates are not coarse-grained here (their spheres "

@@ -19,19 +19,6 @@
 const char *const dem_stage_names[DEM_STAGE_COUNT] = {DEM_STAGES(STAGE_TEXT)};
 #undef STAGE_TEXT
 
-static void set_slot(dem_contact_models *m, enum dem_contact_slot slot, int id)
-{
-    switch (slot) {
-    case SLOT_TANGENTIAL: m->tangential = id; break;
-    case SLOT_COHESION: m->cohesion = id; break;
-    case SLOT_ROLLING: m->rolling = id; break;
-    case SLOT_SURFACE: m->surface = id; break;
-    default: break;
-    }
-}
-
-static const char *const slot_names[SLOT_COUNT] = {"normal", "tangential", "cohesion", "rolling", "surface"};
-
 /* each optional slot's "off" model */
 static const int slot_off[SLOT_COUNT] = {-1, tangential_none, cohesion_none, rolling_none, surface_default};
 
@@ -88,11 +75,11 @@ static void model_probe(dem_system *s, double pair_seconds)
     for (int slot = SLOT_TANGENTIAL; slot < SLOT_COUNT; slot++) {
         if (contact_model_id(&s->models, slot) == slot_off[slot]) continue;
         dem_contact_models m = s->models;
-        set_slot(&m, slot, slot_off[slot]);
-        set_slot(&base, slot, slot_off[slot]);
+        *contact_model_id_ref(&m, slot) = slot_off[slot];
+        *contact_model_id_ref(&base, slot) = slot_off[slot];
         const double without = time_pairs(s, &m, NULL, nhist, reps);
         const double share = all > 0 ? (all - without) / all : 0.0;
-        dem_info("    %-12s %-10s %6.1f %% of the pair kernel, %8.3f s of this run%s", slot_names[slot],
+        dem_info("    %-12s %-10s %6.1f %% of the pair kernel, %8.3f s of this run%s", dem_contact_slot_names[slot],
                  system_model(s, slot)->name, 100 * share, share * pair_seconds,
                  share < 0 ? " (below the scatter of the timings: a busy machine, or a kernel that is no faster without it)" : "");
     }

@@ -30,6 +30,8 @@ const dem_contact_model *dem_contact_model_get(enum dem_contact_slot slot, int i
 
 const char *const *dem_contact_model_names(enum dem_contact_slot slot) { return names[slot]; }
 
+const char *const dem_contact_slot_names[SLOT_COUNT] = {"normal", "tangential", "cohesion", "rolling", "surface"};
+
 /* the order of the slots in a contact's history */
 static const enum dem_contact_slot history_order[SLOT_COUNT] = {SLOT_TANGENTIAL, SLOT_ROLLING, SLOT_NORMAL,
                                                            SLOT_SURFACE, SLOT_COHESION};

@@ -50,10 +50,18 @@ enum dem_surface_model { SURFACE_MODELS(CONTACT_MODEL_ID) SURFACE_COUNT };
 const dem_contact_model *dem_contact_model_get(enum dem_contact_slot slot, int id);
 /* The names of a slot's models, NULL-terminated (for the dictionary's choice). */
 const char *const *dem_contact_model_names(enum dem_contact_slot slot);
+/* The slots' names, as contactModels spells its keys. */
+extern const char *const dem_contact_slot_names[SLOT_COUNT];
 /* The id of the chosen model in each slot, as an array indexed by enum contact_slot. */
 static inline int contact_model_id(const dem_contact_models *m, enum dem_contact_slot slot)
 {
     const int ids[SLOT_COUNT] = {m->normal, m->tangential, m->cohesion, m->rolling, m->surface};
+    return ids[slot];
+}
+/* Where a slot's model id is kept in m (to set it). */
+static inline int *contact_model_id_ref(dem_contact_models *m, enum dem_contact_slot slot)
+{
+    int *const ids[SLOT_COUNT] = {&m->normal, &m->tangential, &m->cohesion, &m->rolling, &m->surface};
     return ids[slot];
 }
 
