@@ -104,13 +104,16 @@ def set_steps(case, dt, interval, override=False):
     edit(os.path.join(case, "system/controlDict"), r"^deltaT\s+[^;]+;", f"deltaT          {interval * dt!r};", 1)
 
 
-def knob_dt(case, f):
+def knob_dt(case, f, strict=False):
+    """The DEM step at f T_R, the fluid step kept; past the check's limit with timeStepOverride,
+    or with strict without it (then the run must stop with the time-step check's message)."""
     tr = rayleigh_time(case)
     step = fluid_step(case)
     interval = max(1, int(round(step / (f * tr))))
     dt = step / interval
-    set_steps(case, dt, interval, override=dt / tr > RAYLEIGH_LIMIT * (1 + 1e-9))
-    return f"{dt / tr:.3g} T_R" + (" (override)" if dt / tr > RAYLEIGH_LIMIT else "")
+    override = not strict and dt / tr > RAYLEIGH_LIMIT * (1 + 1e-9)
+    set_steps(case, dt, interval, override=override)
+    return f"{dt / tr:.3g} T_R" + (" (override)" if override else " (no override)" if strict else "")
 
 
 def knob_interval(case, n):
@@ -156,13 +159,7 @@ def knob_tangential(case, value):
 
 
 def knob_dt_strict(case, f):
-    """The DEM step at f T_R without timeStepOverride: past the check's limit the run must stop
-    with the time-step check's message (the regression point of the extremes)."""
-    tr = rayleigh_time(case)
-    step = fluid_step(case)
-    interval = max(1, int(round(step / (f * tr))))
-    set_steps(case, step / interval, interval)
-    return f"{step / interval / tr:.3g} T_R (no override)"
+    return knob_dt(case, f, strict=True)
 
 
 KNOBS = {
@@ -505,6 +502,13 @@ def read_csv(path):
     return rows
 
 
+def merge_rows(old, new):
+    """old's rows in their order, each replaced by new's row of the same case, knob and value;
+    then new's other rows."""
+    by = {(r["case"], r["knob"], r["value"]): r for r in new}
+    return [by.pop((r["case"], r["knob"], r["value"]), r) for r in old] + list(by.values())
+
+
 def pareto_plot(name, rows, path):
     import matplotlib
     matplotlib.use("Agg")
@@ -650,8 +654,8 @@ def main():
     cases = a.cases.split(",") if a.cases else list(sweep)
     tag = "smoke" if a.smoke else "quick" if a.quick else "extremes" if a.extremes else "full"
     csv_path = os.path.join(RESULTS, f"tradeoff_{tag}.csv")
-    have_ref = {r["case"] for r in read_csv(csv_path) if r["knob"] == "reference"} \
-        if a.update and os.path.exists(csv_path) else set()
+    old_rows = read_csv(csv_path) if a.update and os.path.exists(csv_path) else []
+    have_ref = {r["case"] for r in old_rows if r["knob"] == "reference"}
     jobs = []
     for name in cases:
         if not a.update or name not in have_ref or (a.knobs and "reference" in a.knobs.split(",")):
@@ -670,24 +674,17 @@ def main():
             print(f"  {row['case']:13s} {row['knob']:16s} {row['value']:10s} {row['status']:9s} "
                   f"{row['wall']:7.1f} s wall {row['cpu']:7.1f} s CPU  worst {worst(row):.2f}  {row['setting']}"
                   + (f"  ({row['message']})" if row["message"] else ""), flush=True)
+    rows = merge_rows(old_rows, rows)   # with --update: the CSV's rows, the new ones in their place
     if a.combine or (not (a.smoke or a.quick or a.extremes) and not a.update):
-        base = rows
-        if a.update and os.path.exists(csv_path):
-            new_rows = {(r["case"], r["knob"], r["value"]): r for r in rows}
-            base = [new_rows.get((r["case"], r["knob"], r["value"]), r) for r in read_csv(csv_path)] + \
-                [r for k, r in new_rows.items() if k not in {(q["case"], q["knob"], q["value"]) for q in read_csv(csv_path)}]
         combos = []
         with ThreadPoolExecutor(max_workers=a.j) as ex:
-            for out in ex.map(lambda n: combine(n, [r for r in base if r["knob"] != "combined"], a.timeout),
-                              list(dict.fromkeys(r["case"] for r in base))):
+            for out in ex.map(lambda n: combine(n, [r for r in rows if r["knob"] != "combined"], a.timeout),
+                              list(dict.fromkeys(r["case"] for r in rows))):
                 combos += out
-        rows = rows + combos
-    os.makedirs(RESULTS, exist_ok=True)
-    if a.update and os.path.exists(csv_path):   # the new rows in place of the old ones, in the old order
-        new = {(r["case"], r["knob"], r["value"]): r for r in rows}
-        old = read_csv(csv_path)
-        rows = [new.pop((r["case"], r["knob"], r["value"]), r) for r in old] + list(new.values())
+        rows = merge_rows(rows, combos)
+    if a.update:
         cases = list(dict.fromkeys(r["case"] for r in rows))
+    os.makedirs(RESULTS, exist_ok=True)
     write_csv(rows, csv_path)
     for name in cases:
         pareto_plot(name, [r for r in rows if r["case"] == name], os.path.join(RESULTS, f"{name}.png"))
