@@ -32,6 +32,7 @@ while [ $# -gt 0 ]; do
 done
 [ -n "$old" ] || usage
 new_demrun="$repo/build/dem/demRun"
+. "$here/timing.sh"   # timed_restart
 [ -x "$new_demrun" ] || { echo "build first: ./Allwmake" >&2; exit 1; }
 
 tree=$(mktemp -d /tmp/bench_old.XXXXXX)
@@ -79,11 +80,7 @@ restart() {   # label demRun case-dir -> "<phase wall s> <process cpu s>"
     rm -rf "$dir"; mkdir -p "$dir"; cp -r "$3/constant" "$dir/"
     cp "$snaps/$1.h5" "$dir/particles.h5"
     sed -i 's/^endTime .*/endTime 1e3;/' "$dir/constant/demProperties"
-    nice /usr/bin/time -f "%U %S" -o "$dir/time.txt" "$2" "$dir" -restart -phases "$steps" > "$dir/log.txt" 2>&1 || {
-        echo "demRun failed on a restart; tail of its output:" >&2; tail -5 "$dir/log.txt" >&2; exit 1; }
-    awk '/^PHASE/ { for (i = 3; i <= NF; i++) { split($i, kv, "="); if (kv[1] == "wall_s") w = kv[2] } }
-         END { printf "%s ", w }' "$dir/log.txt"
-    awk '{ print $1 + $2 }' "$dir/time.txt"
+    timed_restart "$2" "$dir" "$steps" "$dir/log.txt"
 }
 echo "INFO $pairs pairs of $steps-step restarts from the settled snapshots"
 for k in $(seq "$pairs"); do

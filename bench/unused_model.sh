@@ -62,11 +62,7 @@ restart() {   # variant round -> "<phase wall s> <process cpu s>"
     [ "$1" = generic ] && env="DEM_GENERIC_KERNELS=1"
     cp "$work/settled.h5" "$dir/particles.h5"
     rm -f "$dir/particles.xdmf"
-    env $env nice /usr/bin/time -f "%U %S" -o "$dir/time.txt" "$demrun" "$dir" -restart -phases "$steps" > "$dir/log.$2" 2>&1 || {
-        echo "demRun failed on variant $1; tail of its output:" >&2; tail -5 "$dir/log.$2" >&2; exit 1; }
-    awk '/^PHASE/ { for (i = 3; i <= NF; i++) { split($i, kv, "="); if (kv[1] == "wall_s") w = kv[2] } }
-         END { printf "%s ", w }' "$dir/log.$2"
-    awk '{ print $1 + $2 }' "$dir/time.txt"
+    timed_restart "$demrun" "$dir" "$steps" "$dir/log.$2" $env
 }
 
 echo "INFO $rounds rounds of $steps-step restarts of each variant, rotating order"
