@@ -116,35 +116,86 @@ void dem_particles_copy(dem_particles *p, int from, int to)
 #undef PF_COPY
 }
 
-size_t dem_particles_pack_size(void)
+/* pack_roles shifts the first bytes it packs: the position must be the first field */
+_Static_assert(PF_FIELD_x == 0, "x must be the first of PARTICLE_FIELDS");
+
+size_t dem_particles_role_size(unsigned roles)
 {
     size_t bytes = 0;
     for (int k = 0; k < PARTICLE_FIELD_COUNT; k++)
-        if (dem_particle_fields[k].flags & PF_MIGRATE) bytes += dem_particle_fields[k].element_size;
+        if (dem_particle_fields[k].flags & roles) bytes += dem_particle_fields[k].element_size;
     return bytes;
 }
 
-size_t dem_particles_pack(const dem_particles *p, int i, void *buf)
+size_t dem_particles_pack_roles(const dem_particles *p, unsigned roles, int i, const double shift[3], void *buf)
 {
     char *out = buf;
     for (int k = 0; k < PARTICLE_FIELD_COUNT; k++) {
         const dem_particle_field *f = &dem_particle_fields[k];
-        if (!(f->flags & PF_MIGRATE)) continue;
+        if (!(f->flags & roles)) continue;
         memcpy(out, (const char *)particle_field_data(p, f) + (size_t)i * f->element_size, f->element_size);
         out += f->element_size;
     }
+    if (shift && (dem_particle_fields[PF_FIELD_x].flags & roles)) {   /* x is the list's first field */
+        double x[3];
+        memcpy(x, buf, sizeof x);
+        for (int q = 0; q < 3; q++) x[q] += shift[q];
+        memcpy(buf, x, sizeof x);
+    }
     return (size_t)(out - (char *)buf);
+}
+
+size_t dem_particles_unpack_roles(dem_particles *p, unsigned roles, int i, const void *buf)
+{
+    const char *in = buf;
+    for (int k = 0; k < PARTICLE_FIELD_COUNT; k++) {
+        const dem_particle_field *f = &dem_particle_fields[k];
+        if (!(f->flags & roles)) continue;
+        memcpy((char *)particle_field_data(p, f) + (size_t)i * f->element_size, in, f->element_size);
+        in += f->element_size;
+    }
+    return (size_t)(in - (const char *)buf);
+}
+
+size_t dem_particles_unpack_add_roles(dem_particles *p, unsigned roles, int i, const void *buf)
+{
+    const char *in = buf;
+    for (int k = 0; k < PARTICLE_FIELD_COUNT; k++) {
+        const dem_particle_field *f = &dem_particle_fields[k];
+        if (!(f->flags & roles)) continue;
+        if (f->scalar != PF_DOUBLE) dem_fatal("particles: field '%s' is not a double and cannot be summed", f->member);
+        double *to = (double *)((char *)particle_field_data(p, f) + (size_t)i * f->element_size), add;
+        for (int q = 0; q < f->components; q++, in += sizeof add) {
+            memcpy(&add, in, sizeof add);
+            to[q] += add;
+        }
+    }
+    return (size_t)(in - (const char *)buf);
+}
+
+void dem_particles_zero_roles(dem_particles *p, unsigned roles, int first, int count)
+{
+    if (count <= 0) return;
+    for (int k = 0; k < PARTICLE_FIELD_COUNT; k++) {
+        const dem_particle_field *f = &dem_particle_fields[k];
+        if (f->flags & roles)
+            memset((char *)particle_field_data(p, f) + (size_t)first * f->element_size, 0, (size_t)count * f->element_size);
+    }
+}
+
+size_t dem_particles_pack_size(void)
+{
+    return dem_particles_role_size(PF_MIGRATE);
+}
+
+size_t dem_particles_pack(const dem_particles *p, int i, void *buf)
+{
+    return dem_particles_pack_roles(p, PF_MIGRATE, i, NULL, buf);
 }
 
 int dem_particles_unpack(dem_particles *p, const void *buf)
 {
     const int i = append_zeroed(p);
-    const char *in = buf;
-    for (int k = 0; k < PARTICLE_FIELD_COUNT; k++) {
-        const dem_particle_field *f = &dem_particle_fields[k];
-        if (!(f->flags & PF_MIGRATE)) continue;
-        memcpy((char *)particle_field_data(p, f) + (size_t)i * f->element_size, in, f->element_size);
-        in += f->element_size;
-    }
+    dem_particles_unpack_roles(p, PF_MIGRATE, i, buf);
     return i;
 }

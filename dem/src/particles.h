@@ -16,8 +16,14 @@ typedef double dem_vec3[3];
 /* What happens to a field besides living in memory:
  *   PF_WRITE    in every HDF5 snapshot and in the XDMF index (ParaView shows it)
  *   PF_RESTART  in every HDF5 snapshot and read back on restart: needed to continue exactly
- *   PF_MIGRATE  moved with the particle when it changes rank (else the arriving particle has 0) */
-enum { PF_WRITE = 1, PF_RESTART = 2, PF_MIGRATE = 4 };
+ *   PF_MIGRATE  moved with the particle when it changes rank (else the arriving particle has 0)
+ * and what a ghost (a periodic image, or a particle of another rank near this one's border,
+ * ghosts.h) carries of it:
+ *   PF_BORDER   copied once, when the ghost is made: what the pair kernel reads of a partner
+ *   PF_FORWARD  copied again before every force computation: what changes each step
+ *   PF_REVERSE  summed back onto the owner after the pair forces (doubles only): the ghost's
+ *               share of the owner's forces; zeroed on the ghosts by every forward copy */
+enum { PF_WRITE = 1, PF_RESTART = 2, PF_MIGRATE = 4, PF_BORDER = 8, PF_FORWARD = 16, PF_REVERSE = 32 };
 
 /* X(member, element, unit, dataset, flags)
  *   member   the struct's member: an array with one element per particle
@@ -34,6 +40,11 @@ enum { PF_WRITE = 1, PF_RESTART = 2, PF_MIGRATE = 4 };
  *     inverse mass and inertia are 0, so the integrator's kicks leave them as they are and the
  *     drift moves them; their forces are still computed (and written). A restart field, since
  *     the inverses are recomputed from it.
+ *   - A ghost carries what the pair kernel reads of a partner (pair_forces.c, neighbour.c):
+ *     position, velocity and spin (BORDER and FORWARD), radius, mass, inverse inertia, type,
+ *     id (the contact history's key) and body (no contact within one body) once; it gives
+ *     back its force and torque (REVERSE). Nothing else of a ghost is read: walls, bodies,
+ *     integration, output and the coupling see only the real particles.
  *   - The coupling's fields (coupling/src/coupling.c): beta and f_fluid are set at the end of
  *     each fluid step's DEM steps, where the fluid receives them (its K_sl and explicit source),
  *     and the particles feel them through the next fluid step: a restart field, so that a
@@ -42,28 +53,28 @@ enum { PF_WRITE = 1, PF_RESTART = 2, PF_MIGRATE = 4 };
  *     where the search for the particle's cell starts (0 is as good a start as any), and a cell
  *     number of one rank's mesh means nothing on another: it does not migrate. */
 #define PARTICLE_FIELDS(X)                                                                      \
-    X(x,           dem_vec3,   "m",        "position",        PF_WRITE | PF_RESTART | PF_MIGRATE)    \
-    X(v,           dem_vec3,   "m/s",      "velocity",        PF_WRITE | PF_RESTART | PF_MIGRATE)    \
-    X(omega,       dem_vec3,   "rad/s",    "omega",           PF_WRITE | PF_RESTART | PF_MIGRATE)    \
+    X(x,           dem_vec3,   "m",        "position",        PF_WRITE | PF_RESTART | PF_MIGRATE | PF_BORDER | PF_FORWARD) \
+    X(v,           dem_vec3,   "m/s",      "velocity",        PF_WRITE | PF_RESTART | PF_MIGRATE | PF_BORDER | PF_FORWARD) \
+    X(omega,       dem_vec3,   "rad/s",    "omega",           PF_WRITE | PF_RESTART | PF_MIGRATE | PF_BORDER | PF_FORWARD) \
     /* total force and torque of this step */                                                  \
-    X(f,           dem_vec3,   "N",        "force",           PF_WRITE | PF_RESTART | PF_MIGRATE)    \
-    X(torque,      dem_vec3,   "N m",      "torque",          PF_RESTART | PF_MIGRATE)               \
+    X(f,           dem_vec3,   "N",        "force",           PF_WRITE | PF_RESTART | PF_MIGRATE | PF_REVERSE) \
+    X(torque,      dem_vec3,   "N m",      "torque",          PF_RESTART | PF_MIGRATE | PF_REVERSE)  \
     /* external force held between exchanges (the fluid force in a coupled run) */             \
     X(f_ext,       dem_vec3,   "N",        "external_force",  PF_MIGRATE)                            \
-    X(radius,      double, "m",        "radius",          PF_WRITE | PF_RESTART | PF_MIGRATE)    \
-    X(mass,        double, "kg",       "mass",            PF_MIGRATE)                            \
+    X(radius,      double, "m",        "radius",          PF_WRITE | PF_RESTART | PF_MIGRATE | PF_BORDER) \
+    X(mass,        double, "kg",       "mass",            PF_MIGRATE | PF_BORDER)                \
     X(inv_mass,    double, "1/kg",     "inverse_mass",    PF_MIGRATE)                            \
     /* 1 / (2/5 m r^2) */                                                                      \
-    X(inv_inertia, double, "1/(kg m^2)", "inverse_inertia", PF_MIGRATE)                          \
+    X(inv_inertia, double, "1/(kg m^2)", "inverse_inertia", PF_MIGRATE | PF_BORDER)              \
     /* material index */                                                                       \
-    X(type,        int,    "1",        "type",            PF_WRITE | PF_RESTART | PF_MIGRATE)    \
+    X(type,        int,    "1",        "type",            PF_WRITE | PF_RESTART | PF_MIGRATE | PF_BORDER) \
     /* global id, stable across sorting, restarts and ranks */                                 \
-    X(id,          int64,  "1",        "id",              PF_WRITE | PF_RESTART | PF_MIGRATE)    \
+    X(id,          int64,  "1",        "id",              PF_WRITE | PF_RESTART | PF_MIGRATE | PF_BORDER) \
     /* 1: moves at its velocity whatever the forces (insertion's prescribedVelocity) */          \
     X(prescribed,  int,    "1",        "prescribed",      PF_WRITE | PF_RESTART | PF_MIGRATE)    \
     /* multisphere: 1 + the index of the body this sphere belongs to (bodies.h), 0 for a free    \
      * sphere; its centre in the body's principal frame, relative to the centre of mass */      \
-    X(body,        int,    "1",        "body",            PF_WRITE | PF_RESTART | PF_MIGRATE)    \
+    X(body,        int,    "1",        "body",            PF_WRITE | PF_RESTART | PF_MIGRATE | PF_BORDER) \
     X(body_offset, dem_vec3,   "m",        "body_offset",     PF_RESTART | PF_MIGRATE)               \
     /* coupling: the fluid cell of the centre at the last exchange (-1: outside the mesh) */   \
     X(fluid_cell,  int,    "1",        "fluid_cell",      0)                                     \
@@ -161,5 +172,17 @@ size_t dem_particles_pack_size(void);
 size_t dem_particles_pack(const dem_particles *p, int i, void *buf);
 /* Append a particle from dem_particles_pack's bytes, its other fields 0; returns its index. */
 int dem_particles_unpack(dem_particles *p, const void *buf);
+
+/* The same for any set of roles (a mask of PF_ flags: a field is packed if it has any of them),
+ * for the ghosts' exchanges: bytes per particle; particle i's fields into buf with `shift` [m]
+ * (NULL: none) added to its position, returns the bytes; the fields from buf onto particle i
+ * (overwritten), returns the bytes read; the fields from buf added onto particle i (the mask's
+ * fields must all be doubles: PF_REVERSE). */
+size_t dem_particles_role_size(unsigned roles);
+size_t dem_particles_pack_roles(const dem_particles *p, unsigned roles, int i, const double shift[3], void *buf);
+size_t dem_particles_unpack_roles(dem_particles *p, unsigned roles, int i, const void *buf);
+size_t dem_particles_unpack_add_roles(dem_particles *p, unsigned roles, int i, const void *buf);
+/* Particles first .. first + count - 1: the mask's fields zeroed. */
+void dem_particles_zero_roles(dem_particles *p, unsigned roles, int first, int count);
 
 #endif

@@ -238,6 +238,65 @@ static void check_copy_and_pack(void)
     dem_particles_free(&q);
 }
 
+/* 6. The ghosts' roles (ghosts.h): a border pack carries exactly the PF_BORDER fields, with the
+ *    shift added to the position and nothing else changed; a forward pack the PF_FORWARD ones; a
+ *    reverse unpack adds (doubles only) and leaves the other fields; zeroing covers its range. */
+static void check_roles(void)
+{
+    dem_particles p;
+    dem_particles_init(&p);
+    fill_all(&p, 12);
+    const unsigned roles[3] = {PF_BORDER, PF_FORWARD, PF_REVERSE};
+    const char *names[3] = {"border", "forward", "reverse"};
+    unsigned char *buf = malloc(dem_particles_role_size(PF_BORDER | PF_FORWARD | PF_REVERSE) + 1);
+    const double shift[3] = {0.5, -2.0, 0.0};
+    for (int r = 0; r < 3; r++) {
+        size_t bytes = 0;
+        for (int k = 0; k < PARTICLE_FIELD_COUNT; k++)
+            if (dem_particle_fields[k].flags & roles[r]) bytes += dem_particle_fields[k].element_size;
+        CHECK(bytes > 0 && dem_particles_role_size(roles[r]) == bytes, "%s size %zu, expected %zu", names[r],
+              dem_particles_role_size(roles[r]), bytes);
+        CHECK(dem_particles_pack_roles(&p, roles[r], 2, shift, buf) == bytes, "%s pack wrote another size", names[r]);
+        CHECK(dem_particles_unpack_roles(&p, roles[r], 9, buf) == bytes, "%s unpack read another size", names[r]);
+        for (int k = 0; k < PARTICLE_FIELD_COUNT; k++) {
+            if (!(dem_particle_fields[k].flags & roles[r])) {
+                CHECK(holds(&p, k, 9, 9), "%s: %s (not in the role) changed", names[r], dem_particle_fields[k].member);
+            } else if (k == PF_FIELD_x) {
+                int ok = 1;
+                for (int q = 0; q < 3; q++) ok &= p.x[9][q] == p.x[2][q] + shift[q];
+                CHECK(ok, "%s: the position is not the source's plus the shift", names[r]);
+            } else {
+                CHECK(holds(&p, k, 9, 2), "%s: %s did not travel", names[r], dem_particle_fields[k].member);
+            }
+        }
+        for (int k = 0; k < PARTICLE_FIELD_COUNT; k++) fill(&p, k, 9, 9);
+    }
+    /* reverse: summed onto the target */
+    double f9[3], t9[3];
+    memcpy(f9, p.f[9], sizeof f9);
+    memcpy(t9, p.torque[9], sizeof t9);
+    dem_particles_pack_roles(&p, PF_REVERSE, 4, NULL, buf);
+    dem_particles_unpack_add_roles(&p, PF_REVERSE, 9, buf);
+    int summed = 1;
+    for (int q = 0; q < 3; q++) summed &= p.f[9][q] == f9[q] + p.f[4][q] && p.torque[9][q] == t9[q] + p.torque[4][q];
+    CHECK(summed, "reverse: force and torque not summed onto the target");
+    for (int k = 0; k < PARTICLE_FIELD_COUNT; k++)
+        if (!(dem_particle_fields[k].flags & PF_REVERSE))
+            CHECK(holds(&p, k, 9, 9), "reverse add: %s changed", dem_particle_fields[k].member);
+    for (int k = 0; k < PARTICLE_FIELD_COUNT; k++)
+        if (dem_particle_fields[k].flags & PF_REVERSE)
+            CHECK(dem_particle_fields[k].scalar == PF_DOUBLE, "reverse field %s is not a double", dem_particle_fields[k].member);
+    dem_particles_zero_roles(&p, PF_REVERSE, 5, 3);
+    for (int i = 4; i <= 8; i++)
+        for (int k = 0; k < PARTICLE_FIELD_COUNT; k++) {
+            const int in_range = i >= 5 && i < 8 && (dem_particle_fields[k].flags & PF_REVERSE);
+            CHECK(in_range ? is_zero(&p, k, i) : holds(&p, k, i, i), "zero_roles: particle %d's %s", i,
+                  dem_particle_fields[k].member);
+        }
+    free(buf);
+    dem_particles_free(&p);
+}
+
 /* Raw contents of dataset `name` of /snapshots/000000 in the field's memory type; NULL if absent.
  * *units gets its units attribute (malloc'd, or NULL). */
 static void *read_raw(const char *h5, const dem_particle_field *f, int n, char **units, int *shape_ok)
@@ -402,6 +461,7 @@ int main(int argc, char **argv)
     check_add();
     check_permute();
     check_copy_and_pack();
+    check_roles();
     check_snapshot(dir);
     printf("fields:");
     for (int k = 0; k < PARTICLE_FIELD_COUNT; k++)

@@ -14,7 +14,7 @@
 /* the real particle behind a list partner (a periodic image stands for its owner) */
 static int real_of(const dem_system *s, int j)
 {
-    return j < s->p.n ? j : s->ghosts.owner[j - s->p.n];
+    return j < s->p.n ? j : dem_ghosts_owner(s, j - s->p.n);
 }
 
 static int count_missing(const dem_system *s, int *duplicates)
