@@ -222,12 +222,12 @@ Foam::label Foam::demCoupling::nParticles() const
 }
 
 
-void Foam::demCoupling::evolve(const volVectorField& U, const volScalarField& p)
+void Foam::demCoupling::evolve(const volVectorField& U, const volVectorField& gradp)
 {
     clock_.timeIncrement();
 
     // Pressure gradient in Pa/m: OpenFOAM's p is kinematic (p/rho_f)
-    const vectorField gradP(rho_*fvc::grad(p)().primitiveField());
+    const vectorField gradP(rho_*gradp.primitiveField());
 
     adapterTime_ += clock_.timeIncrement();
 

@@ -38,7 +38,10 @@ Description
       coefficients (as twoPhaseEulerFoam's faceMomentum; pEqnFace.H):
         (alpha_f phi - alpha_f^0 phi^0)/dt + interp(A) phi - flux(H) + Kf phi
           = flux((Ksl Up + fExplicit)/rho_f) + alpha_f g.S_f - c snGrad(p) |S_f|
-      with A, H of the momentum matrix without the time derivative and the drag, and
+      with A, H of the momentum matrix without the time derivative and the drag, c = 1
+      (model B) or, model A, the gas's share of the face's pressure jump when the jump is
+      split between the two half cells in proportion to their resistance (pressureSplit.H;
+      the particles feel the rest, so that momentum is exchanged face by face), and
       Kf = alpha_f interpolate(Ksl/(rho_f alpha)), the resistance per unit superficial
       velocity interpolated; the cell velocity is rebuilt from the superficial fluxes,
       U = reconstruct(alpha_f phi)/alpha. Each face term is the interpolation of the cell
@@ -52,8 +55,9 @@ Description
       but a packed cell next to free fluid gets about half its velocity (half a cell of
       pressure drop lost at each end of a packed bed).
 
-    Since p keeps its hydrostatic part, the C side gets the full gradient
-    rho_f fvc::grad(p) [Pa/m] and computes the particles' pressure-gradient (buoyancy) force
+    Since p keeps its hydrostatic part, the C side gets the full gradient [Pa/m]
+    (rho_f fvc::grad(p); model A: rho_f times pressureSplit's cell gradient, the particles'
+    share of each face's jump) and computes the particles' pressure-gradient (buoyancy) force
     from it. With alpha = 1 and Ksl = 0 the equations are pimpleFoam's (laminar).
 
     One fluid time step (deltaT of system/controlDict, fixed: adjustTimeStep is refused):
@@ -113,6 +117,7 @@ Description
 #include "fluxReconstruction.H"
 #include "heldTraps.H"
 #include "drivingGradient.H"
+#include "pressureSplit.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -147,8 +152,12 @@ int main(int argc, char *argv[])
     const bool modelA = coupling.modelA();
     // A periodic pipe's driving gradient (constant/drivingGradient; none without it)
     drivingGradient driving(mesh, rhoFluid.value(), faceMomentum);
-    // c of the pressure term at the faces: alpha_f (model A) or 1 (model B)
+    // c of the pressure term at the faces: model A the gas's share of the face's pressure jump
+    // (pressureSplit.H; alpha_f until the coupling's first fields), model B 1
     surfaceScalarField pCoeff_f("pCoeff_f", alphaf);
+    const pressureSplit pressureShares(mesh);
+    // one step's inertia rho_f/dt [kg/(m^3 s)], beside the drag in pressureSplit's weights
+    const dimensionedScalar stepInertia("stepInertia", Ksl.dimensions(), rhoFluid.value()/runTime.deltaTValue());
 
     // The initial void fraction: a continued run's as written at its start time, else the C
     // side's, if it has one before the first step
@@ -204,7 +213,12 @@ int main(int argc, char *argv[])
         {
             coupling.setDrive(driving.drive());   // the particles feel the gas's driving gradient
         }
-        coupling.evolve(U, p);
+        // model A: the particles' share of each face's pressure jump (pressureSplit.H)
+        coupling.evolve
+        (
+            U,
+            modelA ? pressureShares.cellGradient(p, alpha, Ksl, stepInertia)() : fvc::grad(p)()
+        );
         coupling.update(alpha, Ksl, Up, fExplicit);
         if (stepi == 1 && !haveInitialAlpha)
         {
@@ -216,7 +230,7 @@ int main(int argc, char *argv[])
 
         if (modelA)
         {
-            pCoeff_f = alphaf;
+            pressureShares.faceCoefficient(pCoeff_f, alpha, Ksl, stepInertia);
         }
         else
         {
