@@ -6,6 +6,7 @@
 #include "case.h"
 #include "dict.h"
 #include "error.h"
+#include "reduce.h"
 #include "insert.h"
 
 static const char *const axis_names[] = {"x", "y", "z", 0};
@@ -790,6 +791,7 @@ double dem_case_default_max_velocity(const dem_system *s)
         vmax = fmax(vmax, sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]));
     }
     vmax = fmax(vmax, dem_streams_max_speed(s));   /* the particles still to come */
+    dem_reduce_doubles(&vmax, 1, DEM_REDUCE_MAX);   /* the fastest on any rank (reduce.h) */
     for (int k = 0; k < 3; k++) {
         g += s->gravity[k] * s->gravity[k];
         if (s->gravity[k] != 0.0 && !s->periodic[k]) h = fmax(h, s->domain_max[k] - s->domain_min[k]);

@@ -4,6 +4,7 @@
 
 #include "contacts.h"
 #include "error.h"
+#include "reduce.h"
 #include "restart.h"
 
 void dem_restart_save_contacts(const dem_system *s, dem_contact_state *cs)
@@ -55,6 +56,9 @@ int dem_restart_read(dem_system *s, const char *base, double at_time, double tol
         dem_particles_set_mass(&s->p, i, s->materials.mat[s->p.type[i]].density);
         if (s->p.id[i] >= s->next_id) s->next_id = s->p.id[i] + 1;
     }
+    int64_t next = s->next_id;   /* the next free id over all ranks (reduce.h) */
+    dem_reduce_int64s(&next, 1, DEM_REDUCE_MAX);
+    s->next_id = next;
     char where[4200];
     snprintf(where, sizeof where, "%s.h5", base);
     if (cs && cs->bodies.count > 0)   /* multisphere bodies: their spheres take their mass */

@@ -6,6 +6,7 @@
 
 #include "error.h"
 #include "system.h"
+#include "reduce.h"
 #include "timestep.h"
 
 void dem_system_init(dem_system *s)
@@ -245,7 +246,7 @@ static void kick_drift_reset(dem_system *s)
  * particle set changed since: its generation). */
 static int moved_far_since_build(const dem_system *s)
 {
-    if (s->p.generation != s->nlist.generation) return 1;
+    if (s->p.generation != s->nlist.generation) return dem_reduce_any(1);
     const dem_vec3 *restrict x = s->p.x, *restrict x0 = s->nlist.x_at_build;
     const double limit = 0.25 * s->nlist.skin * s->nlist.skin;
     const int listed = s->p.n;
@@ -254,7 +255,7 @@ static int moved_far_since_build(const dem_system *s)
         const double dx = x[i][0] - x0[i][0], dy = x[i][1] - x0[i][1], dz = x[i][2] - x0[i][2];
         moved_far |= dx * dx + dy * dy + dz * dz > limit;
     }
-    return moved_far;
+    return dem_reduce_any(moved_far);   /* every rank rebuilds when one must (reduce.h) */
 }
 
 void dem_system_step(dem_system *s)

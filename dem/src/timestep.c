@@ -4,6 +4,7 @@
 #include "error.h"
 #include "system.h"
 #include "timestep.h"
+#include "reduce.h"
 
 /* Rayleigh-wave time across a sphere: pi r sqrt(rho/G) / (0.1631 nu + 0.8766). */
 static double rayleigh_time(const dem_material *m, double radius)
@@ -30,6 +31,7 @@ dem_timestep_limits dem_timestep_limits_compute(const dem_system *s, double max_
         dem_streams_diameters(s, t, &dmin, &dmax);
         rmin[t] = fmin(rmin[t], 0.5 * dmin);
     }
+    dem_reduce_doubles(rmin, nt, DEM_REDUCE_MIN);   /* the smallest on any rank (reduce.h) */
 
     dem_timestep_limits lim = {INFINITY, INFINITY, INFINITY, "-", "-"};
     static char pair_name[2 * DEM_NAME_LEN + 16];

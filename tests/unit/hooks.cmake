@@ -8,3 +8,8 @@ add_test(NAME error_hooks COMMAND test_hooks)
 # Nothing in dem/src or coupling/src prints or exits except through those hooks (error.c).
 add_test(NAME no_direct_output
          COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/unit/no_direct_output.sh ${CMAKE_SOURCE_DIR})
+# The reduction hook (dem/src/reduce.h): the DEM's global decisions take the other ranks' values.
+add_executable(test_reduce ${CMAKE_CURRENT_SOURCE_DIR}/unit/test_reduce.c)
+target_include_directories(test_reduce PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/validation)
+target_link_libraries(test_reduce dem)
+add_test(NAME reduce_hook COMMAND test_reduce)
