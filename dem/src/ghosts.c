@@ -8,18 +8,7 @@
 void dem_ghosts_free(dem_ghost_list *g)
 {
     for (int w = 0; w < 6; w++) free(g->swap[w].send);
-    free(g->buffer);
     memset(g, 0, sizeof *g);
-}
-
-static char *buffer_for(dem_ghost_list *g, int count, size_t bytes_each)
-{
-    const size_t need = (size_t)count * bytes_each;
-    if (need > g->buffer_capacity) {
-        g->buffer_capacity = 2 * need + 4096;
-        g->buffer = dem_realloc(g->buffer, g->buffer_capacity);
-    }
-    return g->buffer;
 }
 
 static void push_send(dem_ghost_swap *w, int i)
@@ -31,18 +20,13 @@ static void push_send(dem_ghost_swap *w, int i)
     w->send[w->nsend++] = i;
 }
 
-/* Pack `roles` of the swap's sent particles into the buffer (returns it). */
-static const char *pack_swap(dem_system *s, const dem_ghost_swap *w, unsigned roles, size_t each)
+/* One swap's exchange of `roles`: its sent particles packed (the shift added) and unpacked into
+ * its ghosts. Every swap here goes to this process itself, so the pack writes straight into the
+ * receiving slots (dem_particles_copy_roles: gather_roles then put_roles without the buffer); a
+ * swap to another rank will gather into a buffer, send it and put what it receives. */
+static void exchange_swap(dem_system *s, const dem_ghost_swap *w, unsigned roles)
 {
-    char *buf = buffer_for(&s->ghosts, w->nsend, each);
-    for (int m = 0; m < w->nsend; m++) dem_particles_pack_roles(&s->p, roles, w->send[m], w->shift, buf + (size_t)m * each);
-    return buf;   /* serial: what this process sends to itself is what it receives */
-}
-
-/* The swap's ghosts from the received buffer. */
-static void unpack_swap(dem_system *s, const dem_ghost_swap *w, unsigned roles, size_t each, const char *buf)
-{
-    for (int m = 0; m < w->nsend; m++) dem_particles_unpack_roles(&s->p, roles, s->p.n + w->first + m, buf + (size_t)m * each);
+    dem_particles_copy_roles(&s->p, roles, w->send, w->nsend, w->shift, s->p.n + w->first);
 }
 
 void dem_ghosts_build(dem_system *s, double cutoff)
@@ -51,7 +35,6 @@ void dem_ghosts_build(dem_system *s, double cutoff)
     dem_ghost_list *g = &s->ghosts;
     g->n = 0;
     g->nswap = 0;
-    const size_t each = dem_particles_role_size(PF_BORDER);
     for (int d = 0; d < 3; d++) {
         if (!s->periodic[d]) continue;
         const double lo = s->domain_min[d] + cutoff, hi = s->domain_max[d] - cutoff;
@@ -68,7 +51,7 @@ void dem_ghosts_build(dem_system *s, double cutoff)
                 if (side < 0 ? p->x[i][d] < lo : p->x[i][d] >= hi) push_send(w, i);
             w->first = g->n;
             if (p->n + g->n + w->nsend > p->capacity) dem_particles_reserve(p, 2 * (p->n + g->n + w->nsend) + 1024);
-            unpack_swap(s, w, PF_BORDER, each, pack_swap(s, w, PF_BORDER, each));
+            exchange_swap(s, w, PF_BORDER);
             g->n += w->nsend;
         }
     }
@@ -77,10 +60,9 @@ void dem_ghosts_build(dem_system *s, double cutoff)
 void dem_ghosts_update(dem_system *s)
 {
     dem_ghost_list *g = &s->ghosts;
-    const size_t each = dem_particles_role_size(PF_FORWARD);
     for (int k = 0; k < g->nswap; k++) {   /* in order: a ghost sent on is current before it is sent */
         const dem_ghost_swap *w = &g->swap[k];
-        unpack_swap(s, w, PF_FORWARD, each, pack_swap(s, w, PF_FORWARD, each));
+        exchange_swap(s, w, PF_FORWARD);
     }
     dem_particles_zero_roles(&s->p, PF_REVERSE, s->p.n, g->n);
 }
@@ -88,13 +70,11 @@ void dem_ghosts_update(dem_system *s)
 void dem_ghosts_fold_forces(dem_system *s)
 {
     dem_particles *p = &s->p;
-    dem_ghost_list *g = &s->ghosts;
-    const size_t each = dem_particles_role_size(PF_REVERSE);
+    const dem_ghost_list *g = &s->ghosts;
     for (int k = g->nswap - 1; k >= 0; k--) {   /* backwards: a ghost's ghosts are folded onto it first */
         const dem_ghost_swap *w = &g->swap[k];
-        char *buf = buffer_for(g, w->nsend, each);
-        for (int m = 0; m < w->nsend; m++) dem_particles_pack_roles(p, PF_REVERSE, p->n + w->first + m, NULL, buf + (size_t)m * each);
-        for (int m = 0; m < w->nsend; m++) dem_particles_unpack_add_roles(p, PF_REVERSE, w->send[m], buf + (size_t)m * each);
+        /* to itself: take_roles then scatter_add_roles without the buffer */
+        dem_particles_fold_roles(p, PF_REVERSE, p->n + w->first, w->nsend, w->send);
     }
 }
 

@@ -12,8 +12,9 @@
  * sending each ghost's PF_REVERSE fields (force, torque) to be summed onto what it was made from.
  * Which particles a swap sends and where their ghosts land is fixed between builds.
  *
- * In a serial run a periodic direction's swaps send to this process itself: the packed buffer is
- * the received one. A swap that would reach another rank is the MPI halo's (issue 23): the packing,
+ * In a serial run a periodic direction's swaps send to this process itself, so the pack writes
+ * straight into the receiving ghosts and the fold adds straight onto the sources (no buffer;
+ * particles.h's copy_roles and fold_roles, the buffered gather/put/take/scatter in one pass). A swap that would reach another rank is the MPI halo's (issue 23): the packing,
  * the shifts and the order stay as they are and only the transport changes. The neighbour list
  * pairs real particles with ghosts like any other particle, so the force kernels know nothing of
  * periodicity. Only the first n particles are real: integration, walls, output and the coupling
@@ -36,8 +37,6 @@ typedef struct dem_ghost_list {
     int n;                 /* ghosts in all swaps */
     int nswap;
     dem_ghost_swap swap[6];
-    char *buffer;          /* one swap's packed particles */
-    size_t buffer_capacity;
 } dem_ghost_list;
 
 struct dem_system;

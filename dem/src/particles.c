@@ -116,9 +116,6 @@ void dem_particles_copy(dem_particles *p, int from, int to)
 #undef PF_COPY
 }
 
-/* pack_roles shifts the first bytes it packs: the position must be the first field */
-_Static_assert(PF_FIELD_x == 0, "x must be the first of PARTICLE_FIELDS");
-
 size_t dem_particles_role_size(unsigned roles)
 {
     size_t bytes = 0;
@@ -127,50 +124,105 @@ size_t dem_particles_role_size(unsigned roles)
     return bytes;
 }
 
-size_t dem_particles_pack_roles(const dem_particles *p, unsigned roles, int i, const double shift[3], void *buf)
+size_t dem_particles_gather_roles(const dem_particles *p, unsigned roles, const int *idx, int count,
+                                  const double shift[3], void *buf)
 {
     char *out = buf;
     for (int k = 0; k < PARTICLE_FIELD_COUNT; k++) {
         const dem_particle_field *f = &dem_particle_fields[k];
         if (!(f->flags & roles)) continue;
-        memcpy(out, (const char *)particle_field_data(p, f) + (size_t)i * f->element_size, f->element_size);
-        out += f->element_size;
-    }
-    if (shift && (dem_particle_fields[PF_FIELD_x].flags & roles)) {   /* x is the list's first field */
-        double x[3];
-        memcpy(x, buf, sizeof x);
-        for (int q = 0; q < 3; q++) x[q] += shift[q];
-        memcpy(buf, x, sizeof x);
+        const size_t e = f->element_size;
+        if (k == PF_FIELD_x) {   /* the position, shifted: as doubles */
+            double (*to)[3] = (double (*)[3])(void *)out;
+            const double s0 = shift ? shift[0] : 0.0, s1 = shift ? shift[1] : 0.0, s2 = shift ? shift[2] : 0.0;
+            for (int m = 0; m < count; m++) {
+                const double *x = p->x[idx[m]];
+                to[m][0] = x[0] + s0;
+                to[m][1] = x[1] + s1;
+                to[m][2] = x[2] + s2;
+            }
+        } else {
+            const char *from = particle_field_data(p, f);
+            for (int m = 0; m < count; m++) memcpy(out + (size_t)m * e, from + (size_t)idx[m] * e, e);
+        }
+        out += (size_t)count * e;
     }
     return (size_t)(out - (char *)buf);
 }
 
-size_t dem_particles_unpack_roles(dem_particles *p, unsigned roles, int i, const void *buf)
+void dem_particles_put_roles(dem_particles *p, unsigned roles, int first, int count, const void *buf)
 {
     const char *in = buf;
     for (int k = 0; k < PARTICLE_FIELD_COUNT; k++) {
         const dem_particle_field *f = &dem_particle_fields[k];
         if (!(f->flags & roles)) continue;
-        memcpy((char *)particle_field_data(p, f) + (size_t)i * f->element_size, in, f->element_size);
-        in += f->element_size;
+        const size_t bytes = (size_t)count * f->element_size;
+        if (bytes) memcpy((char *)particle_field_data(p, f) + (size_t)first * f->element_size, in, bytes);
+        in += bytes;
     }
-    return (size_t)(in - (const char *)buf);
 }
 
-size_t dem_particles_unpack_add_roles(dem_particles *p, unsigned roles, int i, const void *buf)
+void dem_particles_copy_roles(dem_particles *p, unsigned roles, const int *idx, int count, const double shift[3],
+                              int first)
 {
-    const char *in = buf;
+    for (int k = 0; k < PARTICLE_FIELD_COUNT; k++) {
+        const dem_particle_field *f = &dem_particle_fields[k];
+        if (!(f->flags & roles)) continue;
+        if (k == PF_FIELD_x) {
+            const double s0 = shift ? shift[0] : 0.0, s1 = shift ? shift[1] : 0.0, s2 = shift ? shift[2] : 0.0;
+            for (int m = 0; m < count; m++) {
+                const double *x = p->x[idx[m]];
+                double *to = p->x[first + m];
+                to[0] = x[0] + s0;
+                to[1] = x[1] + s1;
+                to[2] = x[2] + s2;
+            }
+        } else {
+            char *data = particle_field_data(p, f);
+            const size_t e = f->element_size;
+            for (int m = 0; m < count; m++) memcpy(data + (size_t)(first + m) * e, data + (size_t)idx[m] * e, e);
+        }
+    }
+}
+
+void dem_particles_take_roles(const dem_particles *p, unsigned roles, int first, int count, void *buf)
+{
+    char *out = buf;
+    for (int k = 0; k < PARTICLE_FIELD_COUNT; k++) {
+        const dem_particle_field *f = &dem_particle_fields[k];
+        if (!(f->flags & roles)) continue;
+        const size_t bytes = (size_t)count * f->element_size;
+        if (bytes) memcpy(out, (const char *)particle_field_data(p, f) + (size_t)first * f->element_size, bytes);
+        out += bytes;
+    }
+}
+
+void dem_particles_scatter_add_roles(dem_particles *p, unsigned roles, const int *idx, int count, const void *buf)
+{
+    const double *in = buf;
     for (int k = 0; k < PARTICLE_FIELD_COUNT; k++) {
         const dem_particle_field *f = &dem_particle_fields[k];
         if (!(f->flags & roles)) continue;
         if (f->scalar != PF_DOUBLE) dem_fatal("particles: field '%s' is not a double and cannot be summed", f->member);
-        double *to = (double *)((char *)particle_field_data(p, f) + (size_t)i * f->element_size), add;
-        for (int q = 0; q < f->components; q++, in += sizeof add) {
-            memcpy(&add, in, sizeof add);
-            to[q] += add;
-        }
+        double *to = particle_field_data(p, f);
+        const int c = f->components;
+        for (int m = 0; m < count; m++)
+            for (int q = 0; q < c; q++) to[(size_t)idx[m] * c + q] += in[(size_t)m * c + q];
+        in += (size_t)count * c;
     }
-    return (size_t)(in - (const char *)buf);
+}
+
+void dem_particles_fold_roles(dem_particles *p, unsigned roles, int first, int count, const int *idx)
+{
+    for (int k = 0; k < PARTICLE_FIELD_COUNT; k++) {
+        const dem_particle_field *f = &dem_particle_fields[k];
+        if (!(f->flags & roles)) continue;
+        if (f->scalar != PF_DOUBLE) dem_fatal("particles: field '%s' is not a double and cannot be summed", f->member);
+        double *d = particle_field_data(p, f);
+        const int c = f->components;
+        for (int m = 0; m < count; m++)
+            for (int q = 0; q < c; q++) d[(size_t)idx[m] * c + q] += d[(size_t)(first + m) * c + q];
+    }
 }
 
 void dem_particles_zero_roles(dem_particles *p, unsigned roles, int first, int count)
@@ -190,12 +242,12 @@ size_t dem_particles_pack_size(void)
 
 size_t dem_particles_pack(const dem_particles *p, int i, void *buf)
 {
-    return dem_particles_pack_roles(p, PF_MIGRATE, i, NULL, buf);
+    return dem_particles_gather_roles(p, PF_MIGRATE, &i, 1, NULL, buf);
 }
 
 int dem_particles_unpack(dem_particles *p, const void *buf)
 {
     const int i = append_zeroed(p);
-    dem_particles_unpack_roles(p, PF_MIGRATE, i, buf);
+    dem_particles_put_roles(p, PF_MIGRATE, i, 1, buf);
     return i;
 }

@@ -174,15 +174,27 @@ size_t dem_particles_pack(const dem_particles *p, int i, void *buf);
 int dem_particles_unpack(dem_particles *p, const void *buf);
 
 /* The same for any set of roles (a mask of PF_ flags: a field is packed if it has any of them),
- * for the ghosts' exchanges: bytes per particle; particle i's fields into buf with `shift` [m]
- * (NULL: none) added to its position, returns the bytes; the fields from buf onto particle i
- * (overwritten), returns the bytes read; the fields from buf added onto particle i (the mask's
- * fields must all be doubles: PF_REVERSE). */
+ * for the ghosts' exchanges, field by field (the buffer holds each field's elements for all the
+ * particles in turn, so that every copy is a plain loop or one memcpy):
+ *   role_size     bytes per particle;
+ *   gather_roles  particles idx[0 .. count-1] into buf, `shift` [m] (NULL: none) added to the
+ *                 positions; returns the bytes;
+ *   put_roles     buf onto particles first .. first + count - 1 (overwritten);
+ *   copy_roles    gather_roles and put_roles in one pass, without the buffer (a swap to itself);
+ *   fold_roles    take_roles and scatter_add_roles in one pass, without the buffer;
+ *   take_roles    particles first .. first + count - 1 into buf;
+ *   scatter_add_roles  buf added onto particles idx[0 .. count-1] (the mask's fields must all be
+ *                 doubles: PF_REVERSE; an index may repeat);
+ *   zero_roles    particles first .. first + count - 1: the mask's fields zeroed. */
 size_t dem_particles_role_size(unsigned roles);
-size_t dem_particles_pack_roles(const dem_particles *p, unsigned roles, int i, const double shift[3], void *buf);
-size_t dem_particles_unpack_roles(dem_particles *p, unsigned roles, int i, const void *buf);
-size_t dem_particles_unpack_add_roles(dem_particles *p, unsigned roles, int i, const void *buf);
-/* Particles first .. first + count - 1: the mask's fields zeroed. */
+size_t dem_particles_gather_roles(const dem_particles *p, unsigned roles, const int *idx, int count,
+                                  const double shift[3], void *buf);
+void dem_particles_put_roles(dem_particles *p, unsigned roles, int first, int count, const void *buf);
+void dem_particles_copy_roles(dem_particles *p, unsigned roles, const int *idx, int count, const double shift[3],
+                              int first);
+void dem_particles_take_roles(const dem_particles *p, unsigned roles, int first, int count, void *buf);
+void dem_particles_scatter_add_roles(dem_particles *p, unsigned roles, const int *idx, int count, const void *buf);
+void dem_particles_fold_roles(dem_particles *p, unsigned roles, int first, int count, const int *idx);
 void dem_particles_zero_roles(dem_particles *p, unsigned roles, int first, int count);
 
 #endif

@@ -238,9 +238,10 @@ static void check_copy_and_pack(void)
     dem_particles_free(&q);
 }
 
-/* 6. The ghosts' roles (ghosts.h): a border pack carries exactly the PF_BORDER fields, with the
- *    shift added to the position and nothing else changed; a forward pack the PF_FORWARD ones; a
- *    reverse unpack adds (doubles only) and leaves the other fields; zeroing covers its range. */
+/* 6. The ghosts' roles (ghosts.h), field by field: a border gather of particles (2, 5) carries
+ *    exactly the PF_BORDER fields onto 9, 10 with the shift added to the position and nothing else
+ *    changed; the same for forward and reverse; take + scatter-add sums (doubles only, a repeated
+ *    index twice); zeroing covers its range only. */
 static void check_roles(void)
 {
     dem_particles p;
@@ -248,37 +249,43 @@ static void check_roles(void)
     fill_all(&p, 12);
     const unsigned roles[3] = {PF_BORDER, PF_FORWARD, PF_REVERSE};
     const char *names[3] = {"border", "forward", "reverse"};
-    unsigned char *buf = malloc(dem_particles_role_size(PF_BORDER | PF_FORWARD | PF_REVERSE) + 1);
+    unsigned char *buf = malloc(2 * dem_particles_role_size(PF_BORDER | PF_FORWARD | PF_REVERSE) + 1);
     const double shift[3] = {0.5, -2.0, 0.0};
+    const int from[2] = {2, 5};
     for (int r = 0; r < 3; r++) {
         size_t bytes = 0;
         for (int k = 0; k < PARTICLE_FIELD_COUNT; k++)
             if (dem_particle_fields[k].flags & roles[r]) bytes += dem_particle_fields[k].element_size;
         CHECK(bytes > 0 && dem_particles_role_size(roles[r]) == bytes, "%s size %zu, expected %zu", names[r],
               dem_particles_role_size(roles[r]), bytes);
-        CHECK(dem_particles_pack_roles(&p, roles[r], 2, shift, buf) == bytes, "%s pack wrote another size", names[r]);
-        CHECK(dem_particles_unpack_roles(&p, roles[r], 9, buf) == bytes, "%s unpack read another size", names[r]);
-        for (int k = 0; k < PARTICLE_FIELD_COUNT; k++) {
-            if (!(dem_particle_fields[k].flags & roles[r])) {
-                CHECK(holds(&p, k, 9, 9), "%s: %s (not in the role) changed", names[r], dem_particle_fields[k].member);
-            } else if (k == PF_FIELD_x) {
-                int ok = 1;
-                for (int q = 0; q < 3; q++) ok &= p.x[9][q] == p.x[2][q] + shift[q];
-                CHECK(ok, "%s: the position is not the source's plus the shift", names[r]);
-            } else {
-                CHECK(holds(&p, k, 9, 2), "%s: %s did not travel", names[r], dem_particle_fields[k].member);
+        CHECK(dem_particles_gather_roles(&p, roles[r], from, 2, shift, buf) == 2 * bytes, "%s gather wrote another size",
+              names[r]);
+        dem_particles_put_roles(&p, roles[r], 9, 2, buf);
+        for (int m = 0; m < 2; m++)
+            for (int k = 0; k < PARTICLE_FIELD_COUNT; k++) {
+                const int to = 9 + m;
+                if (!(dem_particle_fields[k].flags & roles[r])) {
+                    CHECK(holds(&p, k, to, to), "%s: %s (not in the role) changed", names[r], dem_particle_fields[k].member);
+                } else if (k == PF_FIELD_x) {
+                    int ok = 1;
+                    for (int q = 0; q < 3; q++) ok &= p.x[to][q] == p.x[from[m]][q] + shift[q];
+                    CHECK(ok, "%s: the position is not the source's plus the shift", names[r]);
+                } else {
+                    CHECK(holds(&p, k, to, from[m]), "%s: %s did not travel", names[r], dem_particle_fields[k].member);
+                }
             }
-        }
-        for (int k = 0; k < PARTICLE_FIELD_COUNT; k++) fill(&p, k, 9, 9);
+        for (int k = 0; k < PARTICLE_FIELD_COUNT; k++) { fill(&p, k, 9, 9); fill(&p, k, 10, 10); }
     }
-    /* reverse: summed onto the target */
+    /* reverse: particles 4, 5 summed onto 9 and (twice) 9 again: 9 += f4 + f5 */
     double f9[3], t9[3];
     memcpy(f9, p.f[9], sizeof f9);
     memcpy(t9, p.torque[9], sizeof t9);
-    dem_particles_pack_roles(&p, PF_REVERSE, 4, NULL, buf);
-    dem_particles_unpack_add_roles(&p, PF_REVERSE, 9, buf);
+    const int onto[2] = {9, 9};
+    dem_particles_take_roles(&p, PF_REVERSE, 4, 2, buf);
+    dem_particles_scatter_add_roles(&p, PF_REVERSE, onto, 2, buf);
     int summed = 1;
-    for (int q = 0; q < 3; q++) summed &= p.f[9][q] == f9[q] + p.f[4][q] && p.torque[9][q] == t9[q] + p.torque[4][q];
+    for (int q = 0; q < 3; q++)
+        summed &= p.f[9][q] == (f9[q] + p.f[4][q]) + p.f[5][q] && p.torque[9][q] == (t9[q] + p.torque[4][q]) + p.torque[5][q];
     CHECK(summed, "reverse: force and torque not summed onto the target");
     for (int k = 0; k < PARTICLE_FIELD_COUNT; k++)
         if (!(dem_particle_fields[k].flags & PF_REVERSE))
@@ -286,6 +293,25 @@ static void check_roles(void)
     for (int k = 0; k < PARTICLE_FIELD_COUNT; k++)
         if (dem_particle_fields[k].flags & PF_REVERSE)
             CHECK(dem_particle_fields[k].scalar == PF_DOUBLE, "reverse field %s is not a double", dem_particle_fields[k].member);
+    /* the one-pass forms a swap to itself uses: the same as through the buffer, bit for bit */
+    dem_particles q;
+    dem_particles_init(&q);
+    fill_all(&q, 12);
+    dem_particles_gather_roles(&q, PF_BORDER, from, 2, shift, buf);
+    dem_particles_put_roles(&q, PF_BORDER, 9, 2, buf);
+    dem_particles_take_roles(&q, PF_REVERSE, 4, 2, buf);
+    dem_particles_scatter_add_roles(&q, PF_REVERSE, onto, 2, buf);
+    dem_particles r;
+    dem_particles_init(&r);
+    fill_all(&r, 12);
+    dem_particles_copy_roles(&r, PF_BORDER, from, 2, shift, 9);
+    dem_particles_fold_roles(&r, PF_REVERSE, 4, 2, onto);
+    int same = 1;
+    for (int k = 0; k < PARTICLE_FIELD_COUNT; k++)
+        for (int i = 0; i < 12; i++) same &= memcmp(element(&q, k, i), element(&r, k, i), dem_particle_fields[k].element_size) == 0;
+    CHECK(same, "copy_roles and fold_roles differ from gather + put and take + scatter_add");
+    dem_particles_free(&q);
+    dem_particles_free(&r);
     dem_particles_zero_roles(&p, PF_REVERSE, 5, 3);
     for (int i = 4; i <= 8; i++)
         for (int k = 0; k < PARTICLE_FIELD_COUNT; k++) {
