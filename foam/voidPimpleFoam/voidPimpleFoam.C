@@ -156,6 +156,9 @@ int main(int argc, char *argv[])
     // (pressureSplit.H; alpha_f until the coupling's first fields), model B 1
     surfaceScalarField pCoeff_f("pCoeff_f", alphaf);
     const pressureSplit pressureShares(mesh);
+    // the gas's share of a periodic pipe's driving gradient at the faces: alpha_f (model A), 1 (B).
+    // The drive is uniform, so it is shared as the cells' volumes are, not by resistance
+    surfaceScalarField driveCoeff_f("driveCoeff_f", alphaf);
     // one step's inertia rho_f/dt [kg/(m^3 s)], beside the drag in pressureSplit's weights
     const dimensionedScalar stepInertia("stepInertia", Ksl.dimensions(), rhoFluid.value()/runTime.deltaTValue());
 
@@ -231,10 +234,12 @@ int main(int argc, char *argv[])
         if (modelA)
         {
             pressureShares.faceCoefficient(pCoeff_f, alpha, Ksl, stepInertia);
+            driveCoeff_f = alphaf;
         }
         else
         {
             pCoeff_f = dimensionedScalar("one", dimless, 1.0);
+            driveCoeff_f = pCoeff_f;
         }
 
         clock.timeIncrement();     // (the coupling's time is measured by the C side)
