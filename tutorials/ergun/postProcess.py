@@ -50,7 +50,8 @@ Checks, per run (one CHECK line each; exit 1 on a FAIL):
                     numbers the cells layer by layer); continuity makes it 0 (the cell-centred
                     drag leaves an odd-even pattern there; the solver's faceMomentum removes
                     it), 1 %;
-  <run>_layers:     the last written time on the rising ramp below 0.9 U_mf,ref (the bed still
+  <run>_layers:     (coarseGraining 1 only; INFO above: a layer holds 36 parcels of cg 2, 11 of cg 3)
+                    the last written time on the rising ramp below 0.9 U_mf,ref (the bed still
                     packed): the pressure of each cell layer
                     through the bed against the profile that each layer's drag by the law (with
                     the layer's mean voidage; Gidaspow: Ergun below 0.8, Wen-Yu above) gives, from
@@ -382,8 +383,16 @@ def analyse(run):
         checks.missing(f"{name}_layers", f"no fields written between {t[sel][0]:.3f} and {t[sel][-1]:.3f} s")
     else:
         tw, dev_l, nl, zl = lay
-        checks.deviation(f"{name}_layers", dev_l, TOL_LAYER,
-                         f"t = {tw:g} s, {nl} bed layers, worst at z = {1e3 * zl:.2f} mm")
+        note = f"t = {tw:g} s, {nl} bed layers, worst at z = {1e3 * zl:.2f} mm"
+        if c["cg"] == 1:
+            checks.deviation(f"{name}_layers", dev_l, TOL_LAYER, note)
+        else:
+            # as the pointwise curve: a layer of 2 x 2 cells, 1.25 mm tall, holds about 290 beads but
+            # 36 parcels of cg 2 and 11 of cg 3 (each 1.5 mm, wider than the layer), so its mean
+            # voidage, and the law at it, fluctuate as sqrt(cg^3); the layer's drag follows its
+            # parcels, not the law at one layer's voidage. The bed as a whole is checked above.
+            info(name, f"layers (not checked at coarseGraining {c['cg']:g}): worst deviation "
+                       f"{100 * dev_l:.2f} % of the bed's drop ({note})")
 
     # the gas momentum balance at every fluid step (the solver's postProcessing/momentumBalance.dat:
     # |residual| / the largest term): the pressure drop is the particles' force plus the
