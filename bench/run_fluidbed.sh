@@ -87,7 +87,7 @@ ours_case() {   # ours_case <dir> <interpolation>
 }
 split() {   # the solver's time split: DEM coupling fluid total [s]
     awk '/^Time split/ { on = 1 } on && $1 == "DEM" { d = $2 } on && $1 == "coupling" { c = $2 }
-         on && $1 == "fluid" { f = $2 } on && $1 == "total" { t = $2 } END { print d, c, f, t }' "$1/log.run"
+         on && $1 == "fluid" { f = $2 } on && $1 == "total" { t = $2; on = 0 } END { print d, c, f, t }' "$1/log.run"
 }
 ours_case "$work/ours" cell
 timed ours "$work/ours" "$solver"
