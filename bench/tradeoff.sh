@@ -1,8 +1,9 @@
 #!/bin/bash
 # The speed/accuracy trade (issue 22): every knob of each validation case, one at a time from the
-# case's reference, with wall and CPU time and each check's error; writes
-# bench/results/tradeoff_<full|quick|smoke>.csv, bench/results/<case>.png (Pareto plots) and
-# docs/tradeoff.md (not with -smoke). bench/tradeoff.py says what each knob does.
+# case's reference, with wall and CPU time and each check's error; the full sweep writes
+# docs/tradeoff.md, docs/tradeoff/<case>.png (Pareto plots) and docs/tradeoff/tradeoff_full.csv, the
+# other modes bench/results/tradeoff_<mode>.{md,csv} and <case>.png. bench/tradeoff.py says what
+# each knob does.
 # Usage: bench/tradeoff.sh [-quick | -smoke | -extremes | -regression] [-j N] [--cases a,b] [--knobs a,b]
 #   (full: settling, ergun, fluidisedBed, every knob and the extremes past the sweep; -extremes: only
 #    those; -quick: fewer points, under 10 minutes on
