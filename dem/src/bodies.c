@@ -1,4 +1,5 @@
 /* Multisphere bodies (bodies.h). */
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -16,6 +17,7 @@ void dem_bodies_free(dem_bodies *b)
         free(b->templates[t].radius);
     }
     free(b->templates);
+    free(b->index_of);
     free(b->template_of);
     free(b->id);
     free(b->x);
@@ -59,6 +61,24 @@ int dem_bodies_add_template(dem_bodies *b, const char *name, int n, const double
 }
 
 static const dem_clump_template *template_of(const dem_bodies *b, int k) { return &b->templates[b->template_of[k]]; }
+
+_Noreturn void dem_body_not_here(const dem_bodies *b, int body)
+{
+    dem_fatal("a sphere belongs to body id %d, which is not among the %d bodies here", body - 1, b->n);
+}
+
+/* index_of[id] = k (-1: the body left); the map grows with the ids */
+static void set_index(dem_bodies *b, int64_t id, int k)
+{
+    if (id >= b->index_capacity) {
+        int64_t cap = b->index_capacity ? b->index_capacity : 64;
+        while (cap <= id) cap *= 2;
+        b->index_of = dem_realloc(b->index_of, (size_t)cap * sizeof *b->index_of);
+        for (int64_t j = b->index_capacity; j < cap; j++) b->index_of[j] = -1;
+        b->index_capacity = cap;
+    }
+    b->index_of[id] = k;
+}
 
 static int append_body(dem_bodies *b)
 {
@@ -108,7 +128,7 @@ static void place_spheres(dem_system *s, int positions)
     const dem_vec3 *w = b->w;
     for (int i = 0; i < p->n; i++) {
         if (!p->body[i]) continue;
-        const int k = p->body[i] - 1;
+        const int k = dem_body_index(b, p->body[i]);
         const double *o = p->body_offset[i];
         double r[3];
         for (int d = 0; d < 3; d++) r[d] = R[k][d][0] * o[0] + R[k][d][1] * o[1] + R[k][d][2] * o[2];
@@ -149,7 +169,9 @@ int dem_bodies_add(dem_system *s, int t, const double x[3], const double q_frame
     const int k = append_body(b);
     const dem_clump_template *tp = &b->templates[t];
     b->template_of[k] = t;
+    if (b->next_id >= INT_MAX) dem_fatal("multisphere body: more than %d body ids", INT_MAX - 1);
     b->id[k] = b->next_id++;
+    set_index(b, b->id[k], k);
     dem_quat_multiply(q_frame, tp->q_axes, b->q[k]);   /* principal -> template frame -> space */
     double wb[3];
     dem_quat_rotate_inverse(b->q[k], w, wb);
@@ -164,7 +186,7 @@ int dem_bodies_add(dem_system *s, int t, const double x[3], const double q_frame
     for (int i = 0; i < tp->n; i++) {
         const double zero[3] = {0.0, 0.0, 0.0};
         const int j = dem_particles_add(&s->p, zero, zero, tp->radius[i], 1.0, tp->type, s->next_id++);
-        s->p.body[j] = k + 1;
+        s->p.body[j] = (int)b->id[k] + 1;
         for (int d = 0; d < 3; d++) s->p.body_offset[j][d] = tp->offset[i][d];
         give_body_mass(&s->p, j, M);
     }
@@ -185,7 +207,7 @@ void dem_bodies_sum_forces(dem_system *s)
     }
     for (int i = 0; i < p->n; i++) {
         if (!p->body[i]) continue;
-        const int k = p->body[i] - 1;
+        const int k = dem_body_index(b, p->body[i]);
         const double *fi = p->f[i];
         const double r[3] = {p->x[i][0] - b->x[k][0], p->x[i][1] - b->x[k][1], p->x[i][2] - b->x[k][2]};
         for (int d = 0; d < 3; d++) b->f[k][d] += fi[d] - p->mass[i] * s->gravity[d];   /* its own gravity out */
@@ -289,6 +311,7 @@ void dem_bodies_to_state(const dem_system *s, dem_body_state *st)
 void dem_bodies_from_state(dem_system *s, const dem_body_state *st, const char *where)
 {
     dem_bodies *b = &s->bodies;
+    for (int k = 0; k < b->n; k++) set_index(b, b->id[k], -1);
     b->n = 0;
     for (long k = 0; k < st->count; k++) {
         const int64_t t = st->template_of[k];
@@ -298,6 +321,10 @@ void dem_bodies_from_state(dem_system *s, const dem_body_state *st, const char *
         const int j = append_body(b);   /* no spheres added: they are in the snapshot */
         b->template_of[j] = (int)t;
         b->id[j] = st->id[k];
+        if (b->id[j] < 0 || b->id[j] >= INT_MAX || dem_body_lookup(b, (int)b->id[j] + 1) >= 0)
+            dem_fatal("%s: body %ld has the id %lld, negative, too large or another body's", where, k,
+                      (long long)b->id[j]);
+        set_index(b, b->id[j], j);
         if (b->id[j] >= b->next_id) b->next_id = b->id[j] + 1;
         for (int d = 0; d < 3; d++) {
             b->x[j][d] = st->x[3 * k + d];
@@ -312,22 +339,20 @@ void dem_bodies_from_state(dem_system *s, const dem_body_state *st, const char *
     dem_particles *p = &s->p;
     for (int i = 0; i < p->n; i++) {
         if (!p->body[i]) continue;
-        if (p->body[i] < 0 || p->body[i] > b->n)
-            dem_fatal("%s: particle id %lld belongs to body %d, but the snapshot has %d bodies", where,
+        const int k = p->body[i] > 0 ? dem_body_lookup(b, p->body[i]) : -1;
+        if (k < 0)
+            dem_fatal("%s: particle id %lld belongs to body id %d, which the snapshot's %d bodies do not have", where,
                       (long long)p->id[i], p->body[i] - 1, b->n);
-        give_body_mass(p, i, dem_body_mass(b, p->body[i] - 1));
+        give_body_mass(p, i, dem_body_mass(b, k));
     }
 }
 
 void dem_bodies_remove(dem_system *s, const unsigned char *gone)
 {
     dem_bodies *b = &s->bodies;
-    const int n0 = b->n;
-    int *renumber = dem_malloc((size_t)(n0 ? n0 : 1) * sizeof(int));   /* old index -> new */
-    int *origin = dem_malloc((size_t)(n0 ? n0 : 1) * sizeof(int));     /* new index -> old */
-    for (int k = 0; k < n0; k++) origin[k] = k;
     for (int k = b->n - 1; k >= 0; k--) {   /* from the top: the last body, moved in, is one that stays */
         if (!gone[k]) continue;
+        set_index(b, b->id[k], -1);
         const int last = b->n - 1;
         if (k != last) {
             b->template_of[k] = b->template_of[last];
@@ -340,25 +365,18 @@ void dem_bodies_remove(dem_system *s, const unsigned char *gone)
             memcpy(b->torque[k], b->torque[last], sizeof b->torque[k]);
             memcpy(b->R[k], b->R[last], sizeof b->R[k]);
             memcpy(b->w[k], b->w[last], sizeof b->w[k]);
-            origin[k] = origin[last];
+            set_index(b, b->id[k], k);
         }
         b->n--;
     }
-    for (int k = 0; k < n0; k++) renumber[k] = -1;
-    for (int k = 0; k < b->n; k++) renumber[origin[k]] = k;
-    free(origin);
-    dem_particles *p = &s->p;
-    for (int i = 0; i < p->n; i++) {
-        if (!p->body[i]) continue;
-        if (gone[p->body[i] - 1])
+    const dem_particles *p = &s->p;
+    for (int i = 0; i < p->n; i++)
+        if (p->body[i] && dem_body_lookup(b, p->body[i]) < 0)
             dem_fatal("dem_bodies_remove: particle id %lld of a removed body is still there", (long long)p->id[i]);
-        p->body[i] = renumber[p->body[i] - 1] + 1;
-    }
-    free(renumber);
 }
 
 double dem_particle_volume(const dem_system *s, int i)
 {
     const double r = s->p.radius[i], v = 4.0 / 3.0 * M_PI * r * r * r;
-    return s->p.body[i] ? v * template_of(&s->bodies, s->p.body[i] - 1)->volume_scale : v;
+    return s->p.body[i] ? v * template_of(&s->bodies, dem_body_index(&s->bodies, s->p.body[i]))->volume_scale : v;
 }

@@ -4,9 +4,14 @@
  * (clump_mass.h) and to the spheres' centres in the principal frame. A body is a template placed
  * in the system: centre of mass X, velocity V, orientation q (principal frame to space), angular
  * momentum L_b in the principal frame (rigid_rotation.h). Its spheres are ordinary particles
- * (field `body` = 1 + the body's index, `body_offset` = the centre in the principal frame), so
+ * (field `body` = 1 + the body's id, `body_offset` = the centre in the principal frame), so
  * the neighbour list, the contact models, the walls and the output treat them as spheres; the
  * list leaves out pairs of one body.
+ *
+ * A body's id is global and never reused; its index in the table below is local and changes as
+ * bodies are removed. The spheres name their body by id (dem_body_index finds the index), so that
+ * a sphere keeps its body when the table is renumbered, and when it moves to another process
+ * (issue 23: a body is summed where its centre is).
  *
  * Each sphere carries the body's mass (so a contact's effective mass m* and the time-step check
  * see the body: LIGGGHTS' fix multisphere does the same) and moves with the body: after each
@@ -43,6 +48,8 @@ typedef struct dem_bodies {
     dem_clump_template *templates;
     int n, capacity;
     int64_t next_id;            /* ids stay unique as bodies come and go */
+    int *index_of;              /* id -> index in this table, -1 for a body not here */
+    int64_t index_capacity;     /* ids below it have an entry in index_of */
     int *template_of;
     int64_t *id;
     dem_vec3 *x, *v;            /* centre of mass [m], its velocity [m/s] */
@@ -52,6 +59,21 @@ typedef struct dem_bodies {
     double (*R)[3][3];          /* R(q), kept with q: the rotation of the body frame into space */
     dem_vec3 *w;                /* angular velocity in space [rad/s], kept with L_b */
 } dem_bodies;
+
+/* The index of the body that a sphere's `body` field (1 + id, > 0) names, or -1 if it is not in
+ * this table */
+static inline int dem_body_lookup(const dem_bodies *b, int body)
+{
+    return body - 1 < b->index_capacity ? b->index_of[body - 1] : -1;
+}
+/* The same, fatal when the body is not here (a sphere must be where its body is) */
+_Noreturn void dem_body_not_here(const dem_bodies *b, int body);
+static inline int dem_body_index(const dem_bodies *b, int body)
+{
+    const int k = dem_body_lookup(b, body);
+    if (k < 0) dem_body_not_here(b, body);
+    return k;
+}
 
 /* Body k's mass [kg] (its template's) */
 static inline double dem_body_mass(const dem_bodies *b, int k) { return b->templates[b->template_of[k]].mass.mass; }
@@ -69,8 +91,8 @@ int dem_bodies_add(struct dem_system *s, int t, const double x[3], const double 
                    const double w[3]);
 
 /* Remove the bodies k with gone[k] (their spheres must have been removed from the particles
- * already: lifecycle.h removes a body as one unit); the last body takes a removed one's index and
- * its spheres are renumbered. */
+ * already: lifecycle.h removes a body as one unit); the last body takes a removed one's index
+ * (its spheres keep its id). */
 void dem_bodies_remove(struct dem_system *s, const unsigned char *gone);
 
 /* The step's parts (system.c calls them): first half kick and drift of each body, its spheres

@@ -25,13 +25,13 @@ dem_tally dem_system_remove_marked(dem_system *s, const int *mark)
     dem_tally gone = {0, 0};
     unsigned char *body_gone = dem_calloc((size_t)(b->n ? b->n : 1), 1);
     for (int i = 0; i < p->n; i++)
-        if (mark[i] && p->body[i]) body_gone[p->body[i] - 1] = 1;
+        if (mark[i] && p->body[i]) body_gone[dem_body_index(b, p->body[i])] = 1;
     for (int k = 0; k < b->n; k++)
         if (body_gone[k]) dem_tally_add(&gone, 1, dem_mass_to_quanta(dem_body_mass(b, k)));
     /* from the top down: the particle moved into a hole is always one that stays */
     for (int i = p->n - 1; i >= 0; i--) {
         const int body = p->body[i];
-        if (!(mark[i] || (body && body_gone[body - 1]))) continue;
+        if (!(mark[i] || (body && body_gone[dem_body_index(b, body)]))) continue;
         if (!body) dem_tally_add(&gone, 1, dem_mass_to_quanta(p->mass[i]));
         dem_particles_remove(p, i);
     }

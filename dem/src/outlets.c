@@ -51,7 +51,7 @@ void dem_outlets_remove(dem_system *s, long step)
     }
     for (int i = 0; i < p->n; i++) {
         if (p->body[i]) {
-            mark[i] = body_out[p->body[i] - 1];
+            mark[i] = body_out[dem_body_index(&s->bodies, p->body[i])];
             continue;
         }
         mark[i] = outlet_of(s, p->x[i], step);

@@ -72,8 +72,8 @@ enum { PF_WRITE = 1, PF_RESTART = 2, PF_MIGRATE = 4, PF_BORDER = 8, PF_FORWARD =
     X(id,          int64,  "1",        "id",              PF_WRITE | PF_RESTART | PF_MIGRATE | PF_BORDER) \
     /* 1: moves at its velocity whatever the forces (insertion's prescribedVelocity) */          \
     X(prescribed,  int,    "1",        "prescribed",      PF_WRITE | PF_RESTART | PF_MIGRATE)    \
-    /* multisphere: 1 + the index of the body this sphere belongs to (bodies.h), 0 for a free    \
-     * sphere; its centre in the body's principal frame, relative to the centre of mass */      \
+    /* multisphere: 1 + the global id of the body this sphere belongs to (bodies.h), 0 for a    \
+     * free sphere; its centre in the body's principal frame, relative to the centre of mass */ \
     X(body,        int,    "1",        "body",            PF_WRITE | PF_RESTART | PF_MIGRATE | PF_BORDER) \
     X(body_offset, dem_vec3,   "m",        "body_offset",     PF_RESTART | PF_MIGRATE)               \
     /* coupling: the fluid cell of the centre at the last exchange (-1: outside the mesh) */   \

@@ -161,7 +161,7 @@ static void body_removed_whole(void)
     dem_body_omega(&s.bodies, 2, w2);
     int *mark = calloc((size_t)s.p.n, sizeof *mark);
     for (int i = 0; i < s.p.n; i++)
-        if (s.p.body[i] == 2) { mark[i] = 1; break; }   /* one sphere of the middle body */
+        if (s.p.body[i] == 1 + (int)s.bodies.id[1]) { mark[i] = 1; break; }   /* one sphere of the middle body */
     const dem_tally gone = dem_system_remove_marked(&s, mark);
     const double M = s.bodies.templates[t].mass.mass;
     check_true("body: removed as one unit (one body, its mass)", gone.count == 1 && gone.mass == dem_mass_to_quanta(M));
@@ -176,7 +176,7 @@ static void body_removed_whole(void)
     int spheres_of[2] = {0, 0};
     for (int i = 0; i < s.p.n; i++) {
         if (!s.p.body[i]) continue;
-        const int b = s.p.body[i] - 1;
+        const int b = dem_body_index(&s.bodies, s.p.body[i]);
         spheres_of[b]++;
         double off[3];
         for (int d = 0; d < 3; d++)
