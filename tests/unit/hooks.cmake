@@ -13,3 +13,20 @@ add_executable(test_reduce ${CMAKE_CURRENT_SOURCE_DIR}/unit/test_reduce.c)
 target_include_directories(test_reduce PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/validation)
 target_link_libraries(test_reduce dem)
 add_test(NAME reduce_hook COMMAND test_reduce)
+# The spatial decomposition (dem/src/decompose.h): recursive bisection, serially and on 2 and 4
+# ranks (4 oversubscribed on 2 cores), where every rank must get the serial tree bit for bit.
+add_executable(test_decompose ${CMAKE_CURRENT_SOURCE_DIR}/unit/test_decompose.c)
+target_include_directories(test_decompose PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/validation)
+target_link_libraries(test_decompose dem)
+add_test(NAME decompose COMMAND test_decompose)
+add_executable(test_decompose_mpi ${CMAKE_CURRENT_SOURCE_DIR}/mpi/test_decompose_mpi.c)
+target_include_directories(test_decompose_mpi PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/validation
+                           ${CMAKE_CURRENT_SOURCE_DIR}/unit)
+target_link_libraries(test_decompose_mpi dem_mpi)
+foreach(np 2 4)
+  add_test(NAME decompose_mpi_${np}
+           COMMAND ${MPIEXEC_EXECUTABLE} ${MPIEXEC_NUMPROC_FLAG} ${np} --oversubscribe $<TARGET_FILE:test_decompose_mpi>)
+  # mpirun as root (CI and these machines): ../shared/docs/openfoam-mpi-hdf5-on-debian.md
+  set_tests_properties(decompose_mpi_${np} PROPERTIES
+                       ENVIRONMENT "OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1")
+endforeach()
