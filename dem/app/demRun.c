@@ -160,6 +160,10 @@ int main(int argc, char **argv)
            "builds, %ld sorts, kinetic energy %.6g J\n",
            s.time, total_steps, secs, secs > 0 ? particle_steps / secs : 0.0,
            s.nlist.builds, s.nlist.sorts, dem_system_kinetic_energy(&s));
+    int prescribed = 0;
+    for (int i = 0; i < s.p.n; i++) prescribed += s.p.prescribed[i] != 0;
+    if (prescribed)
+        printf("kinetic energy: the %d prescribed particles (driven at their set velocity) left out\n", prescribed);
     printf("neighbour list: %.2f pairs per particle (skin %g m)\n", s.p.n ? (double)s.nlist.npairs / s.p.n : 0.0, s.nlist.skin);
     if (s.bodies.n)   /* each body's is in the snapshots */
         printf("multisphere: %d bodies, rotational kinetic energy %.6g J (seed 004 eq. 8, summed over the bodies)\n",

@@ -96,9 +96,10 @@ static ALWAYS_INLINE void pair_loop(dem_system *s, const int normal, const int t
                 }
                 k.a2 = needs_radius ? contact_radius_sq_pair(ri, rj, r) : 0.0;
                 if (rolling != rolling_none) {
-                    const double ii = 1.0 / inv_inertia[i], ij = 1.0 / inv_inertia[j];
                     k.rolling_lever = k.r_eff;
-                    k.rolling_inertia = 3.5 * ii * ij / (ii + ij);   /* 1.4 m r^2 = 3.5 I, reduced */
+                    k.rolling_inertia = rolling_inertia_pair(inv_inertia[i], inv_inertia[j]);
+                } else {
+                    k.rolling_inertia = 0.0;   /* unread; set for the compiler's view of the generic kernel */
                 }
                 if (surface != surface_default) {   /* the contact's key: the two ids, lower first */
                     k.sign = id[i] < id[j] ? 1.0 : -1.0;

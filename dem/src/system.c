@@ -49,6 +49,7 @@ static void check_step_motion(const dem_system *s)
         const double lim = 0.5 * (s->nlist.skin + p->radius[i]);
         if (!(dx * dx + dy * dy + dz * dz <= lim * lim)) {
             const double *v = p->v[i], speed = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+            if (!isfinite(dx + dy + dz + speed)) dem_system_check_health(s);   /* a NaN is no motion: say it blew up */
             dem_fatal("particle id %lld moved more than half its radius (%g m) in the step to t = %g s (step "
                       "%ld): its speed %g m/s carries it %g m per step of %g s, so it can pass through "
                       "contacts and walls unseen. Lower timeStep below %g s, or find what accelerated it "
@@ -330,7 +331,9 @@ double dem_system_kinetic_energy(const dem_system *s)
     const dem_particles *p = &s->p;
     double e = dem_bodies_kinetic_energy(s);
     for (int i = 0; i < p->n; i++) {
-        if (p->body[i]) continue;   /* counted with its body */
+        /* a body's sphere is counted with its body; a prescribed particle, driven whatever the
+         * forces, has no inertia the dynamics sees (inv_mass = inv_inertia = 0): left out */
+        if (p->body[i] || p->prescribed[i]) continue;
         const double *v = p->v[i], *w = p->omega[i];
         e += 0.5 * p->mass[i] * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
         e += 0.5 / p->inv_inertia[i] * (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);

@@ -83,7 +83,7 @@ void dem_system_compute_forces(dem_system *s);
 /* Stop with a message if a position or velocity is not finite or an overlap is too large. */
 void dem_system_check_health(const dem_system *s);
 /* Kinetic energy (translational + rotational) [J]: free spheres and bodies (a body's spheres
- * only through their body). */
+ * only through their body); prescribed particles, which the forces do not move, are left out. */
 double dem_system_kinetic_energy(const dem_system *s);
 
 /* Pair forces (pair_forces.c). */

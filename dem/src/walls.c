@@ -207,7 +207,7 @@ static ALWAYS_INLINE void wall_loop(dem_system *s, const int normal, const int t
             k.a2 = needs_radius ? contact_radius_sq_wall(ri, k.delta) : 0.0;
             if (rolling != rolling_none) {
                 k.rolling_lever = k.lever_i;                    /* as LIGGGHTS' cdt at a wall */
-                k.rolling_inertia = 3.5 / p->inv_inertia[i];    /* 1.4 m r^2 = 3.5 I */
+                k.rolling_inertia = rolling_inertia_pair(p->inv_inertia[i], 0.0);   /* the wall does not turn */
             }
             if (surface != surface_default) {   /* keyed on (wall, particle id) */
                 k.sign = 1.0;

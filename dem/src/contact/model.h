@@ -140,4 +140,16 @@ static inline double contact_radius_sq_wall(double ri, double delta)
     return a2 > 0.0 ? a2 : 0.0;
 }
 
+/* The rolling models' inertia 1.4 m R^2 = 3.5 I, reduced for a pair, from the two inverse
+ * inertias: an inverse of 0 is an infinite inertia (a wall, a prescribed particle), which leaves
+ * the other's. Two of them (two prescribed particles, neither of which turns): 0, no damping
+ * (where 1 / (0 + 0) would put an infinity, and 0 x infinity a NaN, into the torques). */
+static inline double rolling_inertia_pair(double inv_i, double inv_j)
+{
+    if (inv_i == 0.0) return inv_j == 0.0 ? 0.0 : 3.5 / inv_j;
+    if (inv_j == 0.0) return 3.5 / inv_i;
+    const double ii = 1.0 / inv_i, ij = 1.0 / inv_j;
+    return 3.5 * ii * ij / (ii + ij);
+}
+
 #endif
