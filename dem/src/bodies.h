@@ -20,8 +20,7 @@
  * onto the body, gravity once with the body's mass, and the body takes the velocity-Verlet step
  * (translation) and the split free rotor between two torque kicks (rotation).
  *
- * Not yet: periodic directions and symmetry planes with bodies (refused), lattice and file
- * insertion of bodies, the coupling. */
+ * Not yet: periodic directions and symmetry planes with bodies (refused). */
 #ifndef DEM_BODIES_H
 #define DEM_BODIES_H
 

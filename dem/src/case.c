@@ -8,6 +8,7 @@
 #include "error.h"
 #include "reduce.h"
 #include "insert.h"
+#include "memory_budget.h"
 
 static const char *const axis_names[] = {"x", "y", "z", 0};
 
@@ -454,6 +455,67 @@ static void read_diameter(const dem_dict *e, dem_insertion *ins, double cg)
     scale_diameters(ins, cg);
 }
 
+/* The particles a random insertion implies, against what the memory holds (memory_budget.h), at
+ * its key: number (x the body's spheres), or solidFraction of the region in particles of the
+ * largest diameter (or bodies of their template's volume): the fewest it can mean. */
+static void check_random_count(const dem_dict *e, const dem_system *s, const dem_insertion *ins)
+{
+    const dem_clump_template *t = ins->body ? &s->bodies.templates[ins->body - 1] : NULL;
+    char what[128];
+    if (t) snprintf(what, sizeof what, "spheres (bodies of %d spheres '%s')", t->n, t->name);
+    else snprintf(what, sizeof what, "particles");
+    const double spheres = t ? t->n : 1.0;
+    if (ins->number > 0) {
+        dem_check_affordable(e, "number", (double)ins->number, (double)ins->number * spheres, 1.0, what);
+    } else {
+        const double d = dem_insertion_max_diameter(ins);
+        const double unit = t ? t->mass.volume : M_PI / 6.0 * d * d * d;
+        dem_check_affordable(e, "solidFraction", ins->solid_fraction,
+                             ins->solid_fraction * dem_insertion_region_volume(ins) / unit * spheres, 1.0, what);
+    }
+}
+
+/* A body insertion's start rotation (issue 26): `orientation` random (the default: each body its
+ * own, uniformly), a unit quaternion (w x y z) (normalised; the template's frame to space), or
+ * { axis (x y z); angle a; } (a in degrees about the axis); `angularVelocity` (x y z) [rad/s] in
+ * space, 0 by default. A file may give each body its own (insert_file.c). */
+static void read_body_rotation(const dem_dict *e, dem_insertion *ins)
+{
+    if (dem_dict_is_dict(e, "orientation")) {
+        const dem_dict *aa = dem_dict_sub(e, "orientation");
+        double axis[3];
+        dem_dict_vector(aa, "axis", axis);
+        const double deg = dem_dict_scalar(aa, "angle", -360.0, 360.0), len = sqrt(axis[0] * axis[0] +
+                           axis[1] * axis[1] + axis[2] * axis[2]);
+        if (!(len > 0.0)) dem_dict_fatal(aa, "axis", "the axis has no direction");
+        const double h = 0.5 * deg * M_PI / 180.0;
+        ins->orientation[0] = cos(h);
+        for (int k = 0; k < 3; k++) ins->orientation[k + 1] = sin(h) * axis[k] / len;
+        ins->orientation_given = 1;
+    } else if (dem_dict_has(e, "orientation") && !dem_dict_is_word(e, "orientation")) {
+        double *q;
+        const int n = dem_dict_scalar_list(e, "orientation", &q);
+        const double len = n == 4 ? sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]) : 0.0;
+        if (n != 4 || !(len > 0.0) || !isfinite(len)) {
+            free(q);
+            dem_dict_fatal(e, "orientation", "give 'random', a quaternion (w x y z) of non-zero length, or "
+                           "{ axis (x y z); angle a; } with a in degrees");
+        }
+        for (int k = 0; k < 4; k++) ins->orientation[k] = q[k] / len;
+        free(q);
+        ins->orientation_given = 1;
+    } else if (dem_dict_has(e, "orientation")) {
+        static const char *const words[] = {"random", 0};
+        dem_dict_choice(e, "orientation", words);
+    }
+    const double zero[3] = {0.0, 0.0, 0.0};
+    dem_dict_vector_opt(e, "angularVelocity", ins->angular_velocity, zero);
+    for (int k = 0; k < 3; k++)
+        if (!(fabs(ins->angular_velocity[k]) <= 1e6))
+            dem_dict_fatal(e, "angularVelocity", "%g rad/s is out of range: allowed [-1e6, 1e6]",
+                           ins->angular_velocity[k]);
+}
+
 static void read_region(const dem_dict *e, dem_insertion *ins)
 {
     const dem_dict *r = dem_dict_sub(e, "region");
@@ -727,6 +789,7 @@ static void run_insertions(const dem_dict *root, dem_system *s, int insert, cons
             if (dem_dict_has(e, "body")) {   /* the file's points are multisphere bodies' centres */
                 ins.body = 1 + template_of(e, s);
                 ins.material = s->bodies.templates[ins.body - 1].type;
+                read_body_rotation(e, &ins);
             } else {
                 ins.material = dem_dict_has(e, "material") ? particle_material_of(e, &s->materials) : -1;
                 ins.has_diameter = dem_dict_has(e, "diameter");
@@ -734,9 +797,10 @@ static void run_insertions(const dem_dict *root, dem_system *s, int insert, cons
             }
         } else {
             read_region(e, &ins);
-            if (ins.method == INSERT_RANDOM && dem_dict_has(e, "body")) {   /* multisphere bodies */
+            if (dem_dict_has(e, "body")) {   /* multisphere bodies: random or on the lattice's points */
                 ins.body = 1 + template_of(e, s);
                 ins.material = s->bodies.templates[ins.body - 1].type;
+                read_body_rotation(e, &ins);
             } else {
                 ins.material = particle_material_of(e, &s->materials);
                 read_diameter(e, &ins, s->coarse_graining);
@@ -747,6 +811,7 @@ static void run_insertions(const dem_dict *root, dem_system *s, int insert, cons
                 ins.number = dem_dict_label_opt(e, "number", 0, 1, 100000000);
                 ins.solid_fraction = dem_dict_scalar_opt(e, "solidFraction", 0.0, 1e-6, 0.6);
                 ins.max_attempts = (int)dem_dict_label_opt(e, "maxAttempts", 200, 1, 100000000);
+                check_random_count(e, s, &ins);
             } else {
                 read_spacing(e, &ins);
                 ins.number = dem_dict_label_opt(e, "number", 0, 1, 100000000);   /* 0: the whole lattice */
@@ -765,7 +830,10 @@ static void run_insertions(const dem_dict *root, dem_system *s, int insert, cons
                 else dem_info("insertion '%s': %ld particles", name, dem_insertion_run(s, &ins));
                 break;
             case INSERT_LATTICE:
-                dem_info("insertion '%s': %ld particles (lattice)", name, dem_insertion_lattice(s, &ins, e));
+                if (ins.body)
+                    dem_info("insertion '%s': %ld multisphere bodies '%s' (lattice)", name,
+                             dem_insertion_lattice(s, &ins, e), s->bodies.templates[ins.body - 1].name);
+                else dem_info("insertion '%s': %ld particles (lattice)", name, dem_insertion_lattice(s, &ins, e));
                 break;
             case INSERT_STREAM: break;   /* read above */
             case INSERT_FILE:

@@ -1002,6 +1002,18 @@ static const char *word_of(const entry *e)
 
 const char *dem_dict_word(const dem_dict *d, const char *key) { return word_of(require(d, key)); }
 
+int dem_dict_is_dict(const dem_dict *d, const char *key)
+{
+    const entry *e = lookup(d, key);
+    return e && e->sub;
+}
+
+int dem_dict_is_word(const dem_dict *d, const char *key)
+{
+    const entry *e = lookup(d, key);
+    return e && !e->sub && e->ntok == 1 && (e->tok[0].type == T_WORD || e->tok[0].type == T_STRING);
+}
+
 const char *dem_dict_word_opt(const dem_dict *d, const char *key, const char *def)
 {
     entry *e = lookup(d, key);

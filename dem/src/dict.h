@@ -59,6 +59,8 @@ void dem_dict_bools3_opt(const dem_dict *d, const char *key, int out[3], int def
  * fatal and the message lists the options and the nearest one. */
 const char *dem_dict_word(const dem_dict *d, const char *key);
 const char *dem_dict_word_opt(const dem_dict *d, const char *key, const char *def);
+int dem_dict_is_word(const dem_dict *d, const char *key);   /* key present with one word as its value */
+int dem_dict_is_dict(const dem_dict *d, const char *key);   /* key present with a sub-dictionary */
 int dem_dict_choice(const dem_dict *d, const char *key, const char *const options[]);
 int dem_dict_choice_opt(const dem_dict *d, const char *key, const char *const options[], int def);
 

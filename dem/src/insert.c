@@ -102,7 +102,7 @@ void dem_insertion_draw_position(const dem_insertion *ins, double radius, dem_rn
     x[c] = ins->centre[1] + reach * w;
 }
 
-static double region_volume(const dem_insertion *ins)
+double dem_insertion_region_volume(const dem_insertion *ins)
 {
     if (ins->region == REGION_BOX)
         return (ins->max[0] - ins->min[0]) * (ins->max[1] - ins->min[1]) * (ins->max[2] - ins->min[2]);
@@ -284,7 +284,7 @@ static long insert_bodies(dem_system *s, const dem_insertion *ins)
         dem_fatal_at(ins->source[0] ? ins->source : NULL, "insertion '%s': the region (smallest extent %g m) is smaller "
                      "than the body '%s' (%g m across)", ins->name, extent, t->name, 2.0 * bound);
     const long target = ins->number > 0 ? ins->number : -1;
-    const double target_volume = ins->solid_fraction * region_volume(ins);
+    const double target_volume = ins->solid_fraction * dem_insertion_region_volume(ins);
     const long expected_bodies = target > 0 ? target : (long)(target_volume / t->mass.volume) + 1;
     long capacity = p->n + expected_bodies * t->n + t->n;
     grid g;
@@ -300,7 +300,8 @@ static long insert_bodies(dem_system *s, const dem_insertion *ins)
         int ok = 0;
         for (int attempt = 0; attempt < ins->max_attempts && !ok; attempt++) {
             dem_insertion_draw_position(ins, bound, &r, x);
-            draw_orientation(&r, q);
+            if (ins->orientation_given) memcpy(q, ins->orientation, sizeof q);
+            else draw_orientation(&r, q);
             dem_body_sphere_centres(t, x, q, centre);
             ok = 1;
             for (int k = 0; k < t->n && ok; k++) ok = !overlaps(s, &g, centre[k], t->radius[k]);
@@ -309,13 +310,12 @@ static long insert_bodies(dem_system *s, const dem_insertion *ins)
             dem_fatal_at(ins->source[0] ? ins->source : NULL, "insertion '%s': placed only %ld bodies '%s' (solid fraction "
                          "%.3f of the region) before one found no free place in %d attempts. Enlarge the region, lower "
                          "number/solidFraction, or raise maxAttempts.",
-                         ins->name, placed, t->name, volume / region_volume(ins), ins->max_attempts);
+                         ins->name, placed, t->name, volume / dem_insertion_region_volume(ins), ins->max_attempts);
         if (p->n + t->n > capacity) {
             capacity = 2 * capacity + t->n;
             g.next = dem_realloc(g.next, (size_t)capacity * sizeof(int));
         }
-        const double w[3] = {0.0, 0.0, 0.0};
-        dem_bodies_add(s, ins->body - 1, x, q, ins->velocity, w);
+        dem_bodies_add(s, ins->body - 1, x, q, ins->velocity, ins->angular_velocity);
         for (int i = p->n - t->n; i < p->n; i++) grid_add(&g, p, i);
         placed++;
         volume += t->mass.volume;
@@ -334,7 +334,7 @@ long dem_insertion_run(dem_system *s, const dem_insertion *ins)
     for (int i = 0; i < p->n; i++) dmax = fmax(dmax, 2.0 * p->radius[i]);
     grid g;
     const long target = ins->number > 0 ? ins->number : -1;
-    const double target_volume = ins->solid_fraction * region_volume(ins);
+    const double target_volume = ins->solid_fraction * dem_insertion_region_volume(ins);
     const double mean_volume = M_PI / 6.0 * pow(0.5 * dmax, 3);   /* a low guess: more cells */
     const long expected = p->n + (target > 0 ? target : (long)(target_volume / mean_volume));
     long capacity = p->n + (target > 0 ? target : 1024);
@@ -365,7 +365,7 @@ long dem_insertion_run(dem_system *s, const dem_insertion *ins)
                       "region) before a particle found no free place in %d attempts. Enlarge the "
                       "region, lower number/solidFraction (random placement jams near 0.3), or "
                       "raise maxAttempts.",
-                      ins->name, placed, volume / region_volume(ins), ins->max_attempts);
+                      ins->name, placed, volume / dem_insertion_region_volume(ins), ins->max_attempts);
         if (p->n + 1 > capacity) {
             capacity *= 2;
             g.next = dem_realloc(g.next, (size_t)capacity * sizeof(int));
@@ -388,6 +388,8 @@ void dem_insert_batch_init(dem_insert_batch *b) { memset(b, 0, sizeof *b); }
 void dem_insert_batch_free(dem_insert_batch *b)
 {
     free(b->x); free(b->v); free(b->diameter); free(b->material); free(b->line);
+    free(b->q);
+    free(b->w);
     memset(b, 0, sizeof *b);
 }
 
@@ -400,13 +402,22 @@ long dem_insert_batch_push(dem_insert_batch *b, const double x[3], const double 
         b->diameter = dem_realloc(b->diameter, (size_t)b->capacity * sizeof *b->diameter);
         b->material = dem_realloc(b->material, (size_t)b->capacity * sizeof *b->material);
         b->line = dem_realloc(b->line, (size_t)b->capacity * sizeof *b->line);
+        b->q = dem_realloc(b->q, (size_t)b->capacity * sizeof *b->q);
+        b->w = dem_realloc(b->w, (size_t)b->capacity * sizeof *b->w);
     }
     const long i = b->n++;
     for (int d = 0; d < 3; d++) { b->x[i][d] = x[d]; b->v[i][d] = v[d]; }
     b->diameter[i] = diameter;
     b->material[i] = material;
     b->line[i] = line;
+    b->q[i][0] = b->w[i][0] = NAN;   /* the entry's */
     return i;
+}
+
+void dem_insert_batch_set_rotation(dem_insert_batch *b, long i, const double q[4], const double w[3])
+{
+    if (q) memcpy(b->q[i], q, sizeof b->q[i]);
+    if (w) memcpy(b->w[i], w, sizeof b->w[i]);
 }
 
 typedef struct batch_where {
@@ -509,9 +520,13 @@ long dem_insertion_add_body_batch(dem_system *s, const dem_insertion *ins, const
     double (*centre)[3] = dem_malloc((size_t)t->n * sizeof *centre);
     for (long i = 0; i < b->n; i++) {
         char where[4200];
-        snprintf(where, sizeof where, "%s:%d", file, b->line[i]);
-        double q[4];
-        draw_orientation(&r, q);
+        if (b->line[i] > 0) snprintf(where, sizeof where, "%s:%d", file, b->line[i]);
+        else snprintf(where, sizeof where, "%s: lattice point %ld", file, i + 1);   /* file: the entry's file:line */
+        double q[4];   /* its own, the entry's, or at random (the draws as many as the bodies that take one) */
+        const int own = !isnan(b->q[i][0]);
+        if (own) memcpy(q, b->q[i], sizeof q);
+        else if (ins->orientation_given) memcpy(q, ins->orientation, sizeof q);
+        else draw_orientation(&r, q);
         dem_body_sphere_centres(t, b->x[i], q, centre);
         for (int k = 0; k < t->n; k++) {
             for (int d = 0; d < 3; d++)
@@ -519,12 +534,12 @@ long dem_insertion_add_body_batch(dem_system *s, const dem_insertion *ins, const
                     dem_fatal_at(where, "body '%s' at (%g %g %g) m: its sphere %d leaves the domain", t->name,
                                  b->x[i][0], b->x[i][1], b->x[i][2], k + 1);
             if (overlaps(s, &g, centre[k], t->radius[k]))
-                dem_fatal_at(where, "body '%s' at (%g %g %g) m (at its random orientation, seed %llu): its sphere %d "
+                dem_fatal_at(where, "body '%s' at (%g %g %g) m (orientation (%g %g %g %g)%s): its sphere %d "
                              "overlaps a wall, a mirror or a particle placed before", t->name, b->x[i][0], b->x[i][1],
-                             b->x[i][2], (unsigned long long)ins->seed, k + 1);
+                             b->x[i][2], q[0], q[1], q[2], q[3],
+                             own || ins->orientation_given ? "" : ", drawn at random", k + 1);
         }
-        const double w[3] = {0.0, 0.0, 0.0};
-        dem_bodies_add(s, ins->body - 1, b->x[i], q, b->v[i], w);
+        dem_bodies_add(s, ins->body - 1, b->x[i], q, b->v[i], isnan(b->w[i][0]) ? ins->angular_velocity : b->w[i]);
         for (int j = p->n - t->n; j < p->n; j++) grid_add(&g, p, j);
     }
     free(centre);

@@ -32,7 +32,10 @@ typedef struct dem_insertion {
     long number;                    /* > 0: this many particles (lattice: the lowest this many; 0: all) */
     double solid_fraction;          /* random: else fill to this solid fraction of the region */
     int material;                   /* -1: none given (file: then every line must name one) */
-    int body;                       /* random: 1 + the multisphere template (bodies.h) to insert; 0: spheres */
+    int body;                       /* 1 + the multisphere template (bodies.h) to insert; 0: spheres */
+    int orientation_given;          /* bodies: 1: every one turned by `orientation`; 0: each at random */
+    double orientation[4];          /* bodies: unit quaternion, the template's frame to space */
+    double angular_velocity[3];     /* bodies: [rad/s], in space */
     double velocity[3];
     int prescribed;                 /* 1: velocity is prescribedVelocity (the particles keep it) */
     int has_diameter;               /* file: a diameter entry was given */
@@ -54,18 +57,24 @@ typedef struct dem_insert_batch {
     double *diameter;               /* [m] */
     int *material;
     int *line;                      /* file line of each particle (file insertions) */
+    double (*q)[4];                 /* bodies: an orientation of its own (q[i][0] NaN: the entry's) */
+    dem_vec3 *w;                    /* bodies: an angular velocity of its own [rad/s] (NaN: the entry's) */
 } dem_insert_batch;
 
 void dem_insert_batch_init(dem_insert_batch *b);
 void dem_insert_batch_free(dem_insert_batch *b);
 long dem_insert_batch_push(dem_insert_batch *b, const double x[3], const double v[3], double diameter, int material, int line);
+/* Body i of the batch with an orientation (unit quaternion, template frame to space) and an
+ * angular velocity [rad/s] of its own; either may be NULL (the entry's) */
+void dem_insert_batch_set_rotation(dem_insert_batch *b, long i, const double q[4], const double w[3]);
 
 struct dem_system;
 struct dem_dict;
 /* Random insertion; fatal (naming the insertion) when the particles do not fit. Returns the count. */
 long dem_insertion_run(struct dem_system *s, const dem_insertion *ins);
 double dem_insertion_max_diameter(const dem_insertion *ins);
-double dem_insertion_min_diameter(const dem_insertion *ins);   /* the smallest it may draw [m] */
+double dem_insertion_min_diameter(const dem_insertion *ins);
+double dem_insertion_region_volume(const dem_insertion *ins);   /* [m^3] */   /* the smallest it may draw [m] */
 /* A centre in the insertion's region, a radius inside its sides. */
 void dem_insertion_draw_position(const dem_insertion *ins, double radius, dem_rng *r, double x[3]);
 

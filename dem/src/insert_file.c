@@ -100,7 +100,7 @@ static double number_or_fatal(const reader *rd, int line, const char *text, size
 static void push(reader *rd, int line, const double x[3], const double *v, double d, int material)
 {
     const dem_insertion *ins = rd->ins;
-    if (ins->body) {   /* a body's centre of mass: its template gives the rest */
+    if (ins->body) {   /* a body's centre of mass (OpenFOAM's positions): its template and the entry give the rest */
         dem_insert_batch_push(rd->b, x, ins->velocity, 0.0, ins->material, line);
         return;
     }
@@ -125,6 +125,31 @@ static void push(reader *rd, int line, const double x[3], const double *v, doubl
 
 static int is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
 
+/* A body's line: x y z [vx vy vz [qw qx qy qz [wx wy wz]]]: its centre of mass [m], velocity
+ * [m/s], orientation (a quaternion, normalised: the template's frame to space) and angular
+ * velocity [rad/s, in space]; what a line leaves out is the entry's. */
+static void read_body_line(reader *rd, int line, const char *const *col, const size_t *clen, int ncol)
+{
+    if (ncol != 3 && ncol != 6 && ncol != 10 && ncol != 13)
+        file_fatal(rd, line, "insertion '%s' places multisphere bodies: 3, 6, 10 or 13 columns (x y z [vx vy vz "
+                   "[qw qx qy qz [wx wy wz]]]), got %d", rd->ins->name, ncol);
+    static const char *const names[] = {"column 1 (x)", "column 2 (y)", "column 3 (z)", "column 4 (vx)",
+                                         "column 5 (vy)", "column 6 (vz)", "column 7 (qw)", "column 8 (qx)",
+                                         "column 9 (qy)", "column 10 (qz)", "column 11 (wx)", "column 12 (wy)",
+                                         "column 13 (wz)"};
+    double val[13];
+    for (int k = 0; k < ncol; k++) val[k] = number_or_fatal(rd, line, col[k], clen[k], names[k]);
+    const long i = dem_insert_batch_push(rd->b, val, ncol >= 6 ? val + 3 : rd->ins->velocity, 0.0, rd->ins->material, line);
+    if (ncol >= 10) {
+        double *q = val + 6;
+        const double len = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+        if (!(len > 0.0) || !isfinite(len))
+            file_fatal(rd, line, "columns 7-10: the quaternion (%g %g %g %g) has no length", q[0], q[1], q[2], q[3]);
+        for (int k = 0; k < 4; k++) q[k] /= len;
+        dem_insert_batch_set_rotation(rd->b, i, q, ncol == 13 ? val + 10 : NULL);
+    }
+}
+
 static void read_columns(reader *rd)
 {
     const char *buf = rd->buf;
@@ -137,22 +162,23 @@ static void read_columns(reader *rd)
         /* the line without its comment */
         size_t stop = pos;
         while (stop < end && buf[stop] != '#' && !(buf[stop] == '/' && stop + 1 < end && buf[stop + 1] == '/')) stop++;
-        const char *col[9];
-        size_t clen[9];
+        const char *col[13];
+        size_t clen[13];
         int ncol = 0;
         for (size_t q = pos; q < stop;) {
             while (q < stop && is_blank(buf[q])) q++;
             if (q >= stop) break;
             const size_t start = q;
             while (q < stop && !is_blank(buf[q])) q++;
-            if (ncol < 9) { col[ncol] = buf + start; clen[ncol] = q - start; }
+            if (ncol < 13) { col[ncol] = buf + start; clen[ncol] = q - start; }
             ncol++;
         }
         pos = end + 1;
         if (ncol == 0) continue;
-        if (rd->ins->body && ncol != 3)
-            file_fatal(rd, line, "insertion '%s' places multisphere bodies: 3 columns (x y z, the centre of mass), "
-                       "got %d", rd->ins->name, ncol);
+        if (rd->ins->body) {
+            read_body_line(rd, line, col, clen, ncol);
+            continue;
+        }
         if (ncol != 3 && ncol != 4 && ncol != 7 && ncol != 8)
             file_fatal(rd, line, "expected 3, 4, 7 or 8 columns (x y z [d [vx vy vz [material]]]), got %d", ncol);
         static const char *const names[] = {"column 1 (x)", "column 2 (y)", "column 3 (z)", "column 4 (diameter)",

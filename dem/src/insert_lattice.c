@@ -26,6 +26,7 @@
 #include "dict.h"
 #include "error.h"
 #include "insert.h"
+#include "memory_budget.h"
 #include "system.h"
 
 typedef struct height_index { double h; long i; } height_index;
@@ -55,6 +56,11 @@ long dem_lattice_points(const dem_insertion *ins, const dem_dict *entry, double 
             dem_dict_fatal(entry, "spacing", "insertion '%s': the spacing %g m along %c exceeds the region's "
                        "extent %g m: no lattice point fits", ins->name, ins->spacing[k], "xyz"[k], len);
         total *= (double)n[k];
+    }
+    {
+        const double smallest = fmin(ins->spacing[0], fmin(ins->spacing[1], ins->spacing[2]));
+        dem_check_affordable(entry, "spacing", smallest, ins->number > 0 ? fmin((double)ins->number, total) : total,
+                             -3.0, "lattice points");
     }
     if (total > 1e8)
         dem_dict_fatal(entry, "spacing", "insertion '%s': the lattice would have %.3g points (%ld x %ld x %ld), "
@@ -112,10 +118,12 @@ long dem_insertion_lattice(dem_system *s, const dem_insertion *ins, const dem_di
     dem_insert_batch_init(&b);
     dem_rng r;
     rng_seed(&r, ins->seed);
-    for (long i = 0; i < n; i++)
-        dem_insert_batch_push(&b, pts + 3 * i, ins->velocity, dem_insertion_draw_diameter(ins, &r), ins->material, 0);
+    for (long i = 0; i < n; i++)   /* a body's size is its template's */
+        dem_insert_batch_push(&b, pts + 3 * i, ins->velocity, ins->body ? 0.0 : dem_insertion_draw_diameter(ins, &r),
+                              ins->material, 0);
     free(pts);
-    const long placed = dem_insertion_add_batch(s, ins, &b, NULL, entry, "region");
+    const long placed = ins->body ? dem_insertion_add_body_batch(s, ins, &b, ins->source)
+                                  : dem_insertion_add_batch(s, ins, &b, NULL, entry, "region");
     dem_insert_batch_free(&b);
     return placed;
 }

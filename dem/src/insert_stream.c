@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "error.h"
+#include "memory_budget.h"
 #include "system.h"
 
 dem_stream *dem_streams_add(dem_system *s)
@@ -124,6 +125,7 @@ static void stream_event(dem_system *s, dem_stream *st, long step, dem_placement
     const int64_t due_count = st->number_rate > 0.0 ? (int64_t)floor(st->number_rate * t_due + 1e-9) : 0;
     const double due_mass = st->mass_rate * t_due;
     const double density = s->materials.mat[st->ins.material].density;
+    const double most = dem_particles_affordable();   /* memory_budget.h */
     int stuck = 0;
     for (;;) {
         if (st->number_rate > 0.0 ? st->inserted.count >= due_count
@@ -142,6 +144,12 @@ static void stream_event(dem_system *s, dem_stream *st, long step, dem_placement
             break;
         }
         st->pending_diameter = 0.0;
+        if (p->n + 1.0 > most)
+            dem_fatal_at(st->ins.source, "key '%s': insertion '%s' has filled the memory at t = %g s: %d particles "
+                         "are the most this machine's memory holds (%.0f bytes each, %d x a particle's fields). Lower "
+                         "the rate or the stream's endTime, or add an outlet.", st->number_rate > 0.0 ? "numberRate"
+                         : "massRate", st->ins.name, s->time, p->n, (double)dem_particle_memory_bytes(),
+                         PARTICLE_MEMORY_FACTOR);
         double v[3];
         for (int q = 0; q < 3; q++)
             v[q] = st->ins.velocity[q] + (st->velocity_std > 0.0 ? st->velocity_std * rng_normal(&st->rng) : 0.0);

@@ -39,7 +39,7 @@ cases=(
   "file_not_a_number|$FILE|0 0 0.005\n0 abc 0.005\n||positions.dat:2: error: column 2 \(y\): 'abc' is not a number"
   "file_bad_diameter|$FILE|0 0 0.005 -0.002\n||positions.dat:1: error: column 4: the diameter -0.002 m is out of range"
   "file_overlap|$FILE|# x y z\n0 0 0.005\n0 0.005 0.005   // fine\n\n0 0.001 0.005\n||positions.dat:5: error: .*overlaps the particle of line 2"
-  "body_file_columns|$BODYFILE|0 0 0.005 0.002\n||positions.dat:1: error: insertion 'bed' places multisphere bodies: 3 columns"
+  "body_file_columns|$BODYFILE|0 0 0.005 0.002\n||positions.dat:1: error: insertion 'bed' places multisphere bodies: 3, 6, 10 or 13 columns.*got 4"
   "body_file_overlap|$BODYFILE|0 0 0.005\n0 0.0005 0.005\n||positions.dat:2: error: body 'pair' at .*its sphere [12] overlaps"
   "file_outside|$FILE|0 0 0.005\n0 0 0.05\n||positions.dat:2: error: .*outside the domain"
   "file_overlaps_wall|$FILE|0 0 0.0005\n||positions.dat:1: error: .*overlaps wall 'floor'"
