@@ -690,9 +690,9 @@ def main():
     if a.combine or (not (a.smoke or a.quick or a.extremes) and not a.update):
         combos = []
         with ThreadPoolExecutor(max_workers=a.j) as ex:
-            for out in ex.map(lambda n: combine(n, [r for r in rows if r["knob"] != "combined"], a.timeout),
-                              list(dict.fromkeys(r["case"] for r in rows))):
-                combos += out
+            for found in ex.map(lambda n: combine(n, [r for r in rows if r["knob"] != "combined"], a.timeout),
+                                list(dict.fromkeys(r["case"] for r in rows))):
+                combos += found
         rows = merge_rows(rows, combos)
     if a.update:
         cases = list(dict.fromkeys(r["case"] for r in rows))
