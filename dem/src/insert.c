@@ -270,6 +270,15 @@ static double region_smallest_extent(const dem_insertion *ins)
         : fmin(2.0 * ins->radius, ins->max[ins->axis] - ins->min[ins->axis]);
 }
 
+/* A body's start orientation: its own (a file's line), else the entry's `orientation`, else drawn
+ * at random (so the draws are as many as the bodies that take one). */
+static void start_orientation(const dem_insertion *ins, const double *own, dem_rng *r, double q[4])
+{
+    if (own) memcpy(q, own, 4 * sizeof *q);
+    else if (ins->orientation_given) memcpy(q, ins->orientation, 4 * sizeof *q);
+    else draw_orientation(r, q);
+}
+
 /* Random insertion of multisphere bodies of one template: a centre in the region (kept its
  * bounding radius from the sides), a random orientation, accepted when none of its spheres
  * overlaps a particle, wall or mirror already there. */
@@ -300,8 +309,7 @@ static long insert_bodies(dem_system *s, const dem_insertion *ins)
         int ok = 0;
         for (int attempt = 0; attempt < ins->max_attempts && !ok; attempt++) {
             dem_insertion_draw_position(ins, bound, &r, x);
-            if (ins->orientation_given) memcpy(q, ins->orientation, sizeof q);
-            else draw_orientation(&r, q);
+            start_orientation(ins, NULL, &r, q);
             dem_body_sphere_centres(t, x, q, centre);
             ok = 1;
             for (int k = 0; k < t->n && ok; k++) ok = !overlaps(s, &g, centre[k], t->radius[k]);
@@ -522,11 +530,9 @@ long dem_insertion_add_body_batch(dem_system *s, const dem_insertion *ins, const
         char where[4200];
         if (b->line[i] > 0) snprintf(where, sizeof where, "%s:%d", file, b->line[i]);
         else snprintf(where, sizeof where, "%s: lattice point %ld", file, i + 1);   /* file: the entry's file:line */
-        double q[4];   /* its own, the entry's, or at random (the draws as many as the bodies that take one) */
+        double q[4];
         const int own = !isnan(b->q[i][0]);
-        if (own) memcpy(q, b->q[i], sizeof q);
-        else if (ins->orientation_given) memcpy(q, ins->orientation, sizeof q);
-        else draw_orientation(&r, q);
+        start_orientation(ins, own ? b->q[i] : NULL, &r, q);
         dem_body_sphere_centres(t, b->x[i], q, centre);
         for (int k = 0; k < t->n; k++) {
             for (int d = 0; d < 3; d++)
