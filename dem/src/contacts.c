@@ -163,6 +163,7 @@ void dem_contacts_gather_rows(const dem_system *s, dem_contact_rows *cr)
     const dem_neighbour_list *nl = &s->nlist;
     const int64_t *id = nl->id_at_build;   /* as built: particles may have gone or moved since */
     cr->count = 0;
+    dem_contact_store_clear(&cr->spill);   /* then only migration (migrate.c) adds to it before the scatter */
     cr->rows = hs ? nl->rows : 0;
     if (cr->rows + 1 > cr->rows_capacity) {
         cr->rows_capacity = cr->rows + 1;
@@ -192,7 +193,7 @@ void dem_contacts_gather_rows(const dem_system *s, dem_contact_rows *cr)
 long dem_contacts_scatter_rows(dem_system *s, dem_contact_rows *cr)
 {
     const int hs = s->history_size;
-    if (hs == 0 || cr->count == 0) return 0;
+    if (hs == 0 || (cr->count == 0 && cr->spill.count == 0)) return 0;
     dem_neighbour_list *nl = &s->nlist;
     const int64_t *id = s->p.id;
     const int same_rows = nl->rows < cr->rows ? nl->rows : cr->rows;
@@ -228,9 +229,8 @@ long dem_contacts_scatter_rows(dem_system *s, dem_contact_rows *cr)
             }
         }
     }
-    /* the rest by ids */
+    /* the rest by ids, with the contacts that came with migrating particles */
     dem_contact_store *spill = &cr->spill;
-    dem_contact_store_clear(spill);
     for (int i = 0; i < cr->rows; i++)
         for (int c = cr->start[i]; c < cr->start[i + 1]; c++)
             if (!cr->matched[c]) dem_contact_store_put(spill, cr->row_id[i], cr->partner_id[c], cr->history + (size_t)c * hs);

@@ -67,8 +67,8 @@ void dem_contact_rows_init(dem_contact_rows *cr, int history_size, int antisymme
 void dem_contact_rows_free(dem_contact_rows *cr);
 /* Before a rebuild: the touching contacts, by row. */
 void dem_contacts_gather_rows(const struct dem_system *s, dem_contact_rows *cr);
-/* After it: onto the new lists (each listed pair and wall candidate whose contact was held);
- * returns how many were found. */
+/* After it: onto the new lists (each listed pair and wall candidate whose contact was held, or
+ * arrived in the spill with a migrating particle, migrate.h); returns how many were found. */
 long dem_contacts_scatter_rows(struct dem_system *s, dem_contact_rows *cr);
 
 /* The flat form a snapshot holds (io.h), from and into a store. */

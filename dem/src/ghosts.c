@@ -1,93 +1,277 @@
-/* Ghost particles by swaps (ghosts.h). */
+/* Ghost particles by swaps to (rank, image) (ghosts.h). */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "comm.h"
 #include "error.h"
 #include "system.h"
 
+enum { IMAGES = 27, SELF_IMAGE = 13 };   /* image 13: no period added */
+
 void dem_ghosts_free(dem_ghost_list *g)
 {
-    for (int w = 0; w < 6; w++) free(g->swap[w].send);
+    for (int w = 0; w < g->swap_capacity; w++) {
+        free(g->swap[w].send);
+        free(g->swap[w].shift);
+    }
+    free(g->swap);
+    free(g->send_count); free(g->recv_count); free(g->recv_first);
+    free(g->send_bytes); free(g->send_offset); free(g->recv_bytes); free(g->recv_offset);
+    free(g->count_out); free(g->count_in);
+    free(g->send_buf); free(g->recv_buf);
+    free(g->pick_key); free(g->pick_index); free(g->key_count);
     memset(g, 0, sizeof *g);
 }
 
-static void push_send(dem_ghost_swap *w, int i)
+static void size_rank_arrays(dem_ghost_list *g, int nranks)
 {
-    if (w->nsend == w->send_capacity) {
-        w->send_capacity = w->send_capacity ? 2 * w->send_capacity : 1024;
-        w->send = dem_realloc(w->send, (size_t)w->send_capacity * sizeof *w->send);
-    }
-    w->send[w->nsend++] = i;
+    if (g->nranks == nranks && g->send_count) return;
+    g->nranks = nranks;
+    const size_t n = (size_t)nranks;
+    g->send_count = dem_realloc(g->send_count, n * sizeof(int));
+    g->recv_count = dem_realloc(g->recv_count, n * sizeof(int));
+    g->recv_first = dem_realloc(g->recv_first, n * sizeof(int));
+    g->send_bytes = dem_realloc(g->send_bytes, n * sizeof(size_t));
+    g->send_offset = dem_realloc(g->send_offset, n * sizeof(size_t));
+    g->recv_bytes = dem_realloc(g->recv_bytes, n * sizeof(size_t));
+    g->recv_offset = dem_realloc(g->recv_offset, n * sizeof(size_t));
+    g->count_out = dem_realloc(g->count_out, n * sizeof(int64_t));
+    g->count_in = dem_realloc(g->count_in, n * sizeof(int64_t));
 }
 
-/* One swap's exchange of `roles`: its sent particles packed (the shift added) and unpacked into
- * its ghosts. Every swap here goes to this process itself, so the pack writes straight into the
- * receiving slots (dem_particles_copy_roles: gather_roles then put_roles without the buffer); a
- * swap to another rank will gather into a buffer, send it and put what it receives. */
-static void exchange_swap(dem_system *s, const dem_ghost_swap *w, unsigned roles)
+static void *reserve_bytes(unsigned char **buf, size_t *capacity, size_t bytes)
 {
-    dem_particles_copy_roles(&s->p, roles, w->send, w->nsend, w->shift, s->p.n + w->first);
+    if (bytes > *capacity) {
+        *capacity = bytes + bytes / 4 + 4096;
+        *buf = dem_realloc(*buf, *capacity);
+    }
+    return *buf;
+}
+
+static void push_pick(dem_ghost_list *g, long *n, int key, int i)
+{
+    if (*n == g->pick_capacity) {
+        g->pick_capacity = g->pick_capacity ? 2 * g->pick_capacity : 4096;
+        g->pick_key = dem_realloc(g->pick_key, (size_t)g->pick_capacity * sizeof(int));
+        g->pick_index = dem_realloc(g->pick_index, (size_t)g->pick_capacity * sizeof(int));
+    }
+    g->pick_key[*n] = key;
+    g->pick_index[*n] = i;
+    (*n)++;
+}
+
+/* Part b's box as the halo sees it: a side on a closed face of the domain reaches to infinity
+ * (particles may lie up to a radius beyond it, and the owner takes them: decompose.h). */
+static void halo_box(const dem_system *s, int b, double lo[3], double hi[3])
+{
+    for (int k = 0; k < 3; k++) {
+        lo[k] = s->decomp.lo[b][k];
+        hi[k] = s->decomp.hi[b][k];
+        if (!s->periodic[k]) {
+            if (lo[k] <= s->domain_min[k]) lo[k] = -INFINITY;
+            if (hi[k] >= s->domain_max[k]) hi[k] = INFINITY;
+        }
+    }
+}
+
+static double distance2(const double lo[3], const double hi[3], const double y[3])
+{
+    double d2 = 0.0;
+    for (int k = 0; k < 3; k++) {
+        const double e = y[k] < lo[k] ? lo[k] - y[k] : y[k] > hi[k] ? y[k] - hi[k] : 0.0;
+        d2 += e * e;
+    }
+    return d2;
+}
+
+/* Which (rank, image) each real particle goes to, as (key = rank * 27 + image, index) picks. */
+static long pick(dem_system *s, double cutoff, double (*lo)[3], double (*hi)[3])
+{
+    dem_ghost_list *g = &s->ghosts;
+    const dem_particles *p = &s->p;
+    const int me = dem_comm_rank(), nparts = s->decomp.nparts;
+    const double c2 = cutoff * cutoff;
+    long npick = 0;
+    for (int i = 0; i < p->n; i++) {
+        const double *x = p->x[i];
+        /* most particles are deeper than the cutoff in this rank's box: nothing to send */
+        if (x[0] - lo[me][0] >= cutoff && hi[me][0] - x[0] > cutoff && x[1] - lo[me][1] >= cutoff &&
+            hi[me][1] - x[1] > cutoff && x[2] - lo[me][2] >= cutoff && hi[me][2] - x[2] > cutoff)
+            continue;
+        int from[3], to[3];   /* the periods to add in each direction */
+        for (int k = 0; k < 3; k++) {
+            from[k] = to[k] = 0;
+            if (!s->periodic[k]) continue;
+            if (x[k] < s->domain_min[k] + cutoff) to[k] = 1;      /* near the low side: beyond the high one */
+            if (x[k] >= s->domain_max[k] - cutoff) from[k] = -1;
+        }
+        for (int iz = from[2]; iz <= to[2]; iz++)
+            for (int iy = from[1]; iy <= to[1]; iy++)
+                for (int ix = from[0]; ix <= to[0]; ix++) {
+                    const int image = (ix + 1) + 3 * (iy + 1) + 9 * (iz + 1);
+                    const double y[3] = {x[0] + ix * s->period[0], x[1] + iy * s->period[1], x[2] + iz * s->period[2]};
+                    for (int b = 0; b < nparts; b++) {
+                        if (b == me && image == SELF_IMAGE) continue;
+                        if (distance2(lo[b], hi[b], y) < c2) push_pick(g, &npick, b * IMAGES + image, i);
+                    }
+                }
+    }
+    return npick;
+}
+
+static dem_ghost_swap *new_swap(dem_ghost_list *g)
+{
+    if (g->nswap == g->swap_capacity) {
+        const int old = g->swap_capacity;
+        g->swap_capacity = old ? 2 * old : 16;
+        g->swap = dem_realloc(g->swap, (size_t)g->swap_capacity * sizeof *g->swap);
+        memset(g->swap + old, 0, (size_t)(g->swap_capacity - old) * sizeof *g->swap);
+    }
+    return &g->swap[g->nswap++];
+}
+
+/* The picks sorted by key (counting sort: stable, so each image sends in index order), one swap
+ * per rank that gets any. */
+static void make_swaps(dem_system *s, long npick)
+{
+    dem_ghost_list *g = &s->ghosts;
+    const int nkeys = g->nranks * IMAGES;
+    if (nkeys + 1 > g->key_capacity) {
+        g->key_capacity = nkeys + 1;
+        g->key_count = dem_realloc(g->key_count, (size_t)g->key_capacity * sizeof(int));
+    }
+    memset(g->key_count, 0, (size_t)(nkeys + 1) * sizeof(int));
+    for (long k = 0; k < npick; k++) g->key_count[g->pick_key[k] + 1]++;
+    for (int key = 0; key < nkeys; key++) g->key_count[key + 1] += g->key_count[key];   /* where each key starts */
+    g->nswap = 0;
+    int *swap_of_rank = dem_malloc((size_t)g->nranks * sizeof(int)), *rank_start = dem_malloc((size_t)g->nranks * sizeof(int));
+    for (int r = 0; r < g->nranks; r++) {
+        const int count = g->key_count[(r + 1) * IMAGES] - g->key_count[r * IMAGES];
+        rank_start[r] = g->key_count[r * IMAGES];
+        g->send_count[r] = count;
+        swap_of_rank[r] = -1;
+        if (count == 0) continue;
+        swap_of_rank[r] = g->nswap;
+        dem_ghost_swap *w = new_swap(g);
+        w->rank = r;
+        if (count > w->send_capacity) {
+            w->send_capacity = count + count / 4 + 64;
+            w->send = dem_realloc(w->send, (size_t)w->send_capacity * sizeof(int));
+            w->shift = dem_realloc(w->shift, (size_t)w->send_capacity * sizeof(dem_vec3));
+        }
+        w->nsend = count;
+    }
+    for (long k = 0; k < npick; k++) {
+        const int key = g->pick_key[k], r = key / IMAGES, image = key % IMAGES;
+        dem_ghost_swap *w = &g->swap[swap_of_rank[r]];
+        const int at = g->key_count[key]++ - rank_start[r];
+        w->send[at] = g->pick_index[k];
+        w->shift[at][0] = (image % 3 - 1) * s->period[0];
+        w->shift[at][1] = (image / 3 % 3 - 1) * s->period[1];
+        w->shift[at][2] = (image / 9 - 1) * s->period[2];
+    }
+    free(swap_of_rank);
+    free(rank_start);
+}
+
+/* Pack `roles` of every swap to another rank (its shift added when `shifted`), exchange, unpack
+ * into the ghost slots; the swaps to this rank copy without a buffer. */
+static void exchange_forward(dem_system *s, unsigned roles, int shifted)
+{
+    dem_particles *p = &s->p;
+    dem_ghost_list *g = &s->ghosts;
+    const int me = dem_comm_rank(), nr = g->nranks;
+    const size_t rs = dem_particles_role_size(roles);
+    size_t out = 0, in = 0;
+    for (int r = 0; r < nr; r++) {
+        g->send_offset[r] = out;
+        g->send_bytes[r] = r == me ? 0 : (size_t)g->send_count[r] * rs;
+        out += g->send_bytes[r];
+        g->recv_offset[r] = in;
+        g->recv_bytes[r] = r == me ? 0 : (size_t)g->recv_count[r] * rs;
+        in += g->recv_bytes[r];
+    }
+    unsigned char *send = reserve_bytes(&g->send_buf, &g->send_buf_capacity, out);
+    unsigned char *recv = reserve_bytes(&g->recv_buf, &g->recv_buf_capacity, in);
+    for (int k = 0; k < g->nswap; k++) {
+        const dem_ghost_swap *w = &g->swap[k];
+        const dem_vec3 *shift = shifted ? w->shift : NULL;
+        if (w->rank == me) dem_particles_copy_roles(p, roles, w->send, w->nsend, shift, p->n + g->recv_first[me]);
+        else dem_particles_gather_roles(p, roles, w->send, w->nsend, shift, send + g->send_offset[w->rank]);
+    }
+    dem_comm_exchange(send, g->send_bytes, g->send_offset, recv, g->recv_bytes, g->recv_offset);
+    for (int r = 0; r < nr; r++)
+        if (r != me && g->recv_count[r])
+            dem_particles_put_roles(p, roles, p->n + g->recv_first[r], g->recv_count[r], recv + g->recv_offset[r]);
 }
 
 void dem_ghosts_build(dem_system *s, double cutoff)
 {
     dem_particles *p = &s->p;
     dem_ghost_list *g = &s->ghosts;
+    const int nr = dem_comm_size(), nparts = s->decomp.nparts;
+    if (nparts != nr)
+        dem_fatal("internal: the decomposition has %d parts for %d ranks (dem_system_setup makes it)", nparts, nr);
+    size_rank_arrays(g, nr);
+    double (*lo)[3] = dem_malloc((size_t)nparts * sizeof *lo), (*hi)[3] = dem_malloc((size_t)nparts * sizeof *hi);
+    for (int b = 0; b < nparts; b++) halo_box(s, b, lo[b], hi[b]);
+    make_swaps(s, pick(s, cutoff, lo, hi));
+    free(lo);
+    free(hi);
+    for (int r = 0; r < nr; r++) g->count_out[r] = g->send_count[r];
+    dem_comm_counts(g->count_out, g->count_in);
     g->n = 0;
-    g->nswap = 0;
-    for (int d = 0; d < 3; d++) {
-        if (!s->periodic[d]) continue;
-        const double lo = s->domain_min[d] + cutoff, hi = s->domain_max[d] - cutoff;
-        const int count = p->n + g->n;   /* the real particles and the ghosts so far: both swaps of a
-                                            direction choose from these, not from each other's ghosts */
-        for (int side = -1; side <= 1; side += 2) {
-            dem_ghost_swap *w = &g->swap[g->nswap++];
-            w->dim = d;
-            w->side = side;
-            for (int q = 0; q < 3; q++) w->shift[q] = 0.0;
-            w->shift[d] = -side * s->period[d];   /* the low side's particles reappear beyond the high side */
-            w->nsend = 0;
-            for (int i = 0; i < count; i++)
-                if (side < 0 ? p->x[i][d] < lo : p->x[i][d] >= hi) push_send(w, i);
-            w->first = g->n;
-            if (p->n + g->n + w->nsend > p->capacity) dem_particles_reserve(p, 2 * (p->n + g->n + w->nsend) + 1024);
-            exchange_swap(s, w, PF_BORDER);
-            g->n += w->nsend;
-        }
+    for (int r = 0; r < nr; r++) {
+        g->recv_count[r] = (int)g->count_in[r];
+        g->recv_first[r] = g->n;
+        g->n += g->recv_count[r];
     }
+    if (p->n + g->n > p->capacity) dem_particles_reserve(p, 2 * (p->n + g->n) + 1024);
+    exchange_forward(s, PF_BORDER, 1);
 }
 
 void dem_ghosts_update(dem_system *s)
 {
-    dem_ghost_list *g = &s->ghosts;
-    for (int k = 0; k < g->nswap; k++) {   /* in order: a ghost sent on is current before it is sent */
-        const dem_ghost_swap *w = &g->swap[k];
-        exchange_swap(s, w, PF_FORWARD);
-    }
-    dem_particles_zero_roles(&s->p, PF_REVERSE, s->p.n, g->n);
+    exchange_forward(s, PF_FORWARD, 1);
+    dem_particles_zero_roles(&s->p, PF_REVERSE, s->p.n, s->ghosts.n);
 }
 
 void dem_ghosts_fold_forces(dem_system *s)
 {
     dem_particles *p = &s->p;
-    const dem_ghost_list *g = &s->ghosts;
-    for (int k = g->nswap - 1; k >= 0; k--) {   /* backwards: a ghost's ghosts are folded onto it first */
+    dem_ghost_list *g = &s->ghosts;
+    const int me = dem_comm_rank(), nr = g->nranks;
+    const size_t rs = dem_particles_role_size(PF_REVERSE);
+    size_t out = 0, in = 0;
+    for (int r = 0; r < nr; r++) {   /* each ghost goes back to the rank it came from */
+        g->send_offset[r] = out;
+        g->send_bytes[r] = r == me ? 0 : (size_t)g->recv_count[r] * rs;
+        out += g->send_bytes[r];
+        g->recv_offset[r] = in;
+        g->recv_bytes[r] = r == me ? 0 : (size_t)g->send_count[r] * rs;
+        in += g->recv_bytes[r];
+    }
+    unsigned char *send = reserve_bytes(&g->send_buf, &g->send_buf_capacity, out);
+    unsigned char *recv = reserve_bytes(&g->recv_buf, &g->recv_buf_capacity, in);
+    for (int r = 0; r < nr; r++)
+        if (r != me && g->recv_count[r])
+            dem_particles_take_roles(p, PF_REVERSE, p->n + g->recv_first[r], g->recv_count[r], send + g->send_offset[r]);
+    dem_comm_exchange(send, g->send_bytes, g->send_offset, recv, g->recv_bytes, g->recv_offset);
+    for (int k = 0; k < g->nswap; k++) {
         const dem_ghost_swap *w = &g->swap[k];
-        /* to itself: take_roles then scatter_add_roles without the buffer */
-        dem_particles_fold_roles(p, PF_REVERSE, p->n + w->first, w->nsend, w->send);
+        if (w->rank == me) dem_particles_fold_roles(p, PF_REVERSE, p->n + g->recv_first[me], w->nsend, w->send);
+        else dem_particles_scatter_add_roles(p, PF_REVERSE, w->send, w->nsend, recv + g->recv_offset[w->rank]);
     }
 }
 
 int dem_ghosts_owner(const dem_system *s, int k)
 {
     const dem_ghost_list *g = &s->ghosts;
-    int i = s->p.n + k;
-    while (i >= s->p.n) {
-        const int j = i - s->p.n;
-        int w = 0;
-        while (w < g->nswap && !(j >= g->swap[w].first && j < g->swap[w].first + g->swap[w].nsend)) w++;
-        if (w == g->nswap) return -1;
-        i = g->swap[w].send[j - g->swap[w].first];
-    }
-    return i;
+    const int me = dem_comm_rank();
+    const int j = k - g->recv_first[me];
+    if (j < 0 || j >= g->recv_count[me]) return -1;
+    for (int w = 0; w < g->nswap; w++)
+        if (g->swap[w].rank == me) return g->swap[w].send[j];
+    return -1;
 }

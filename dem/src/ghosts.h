@@ -1,55 +1,69 @@
-/* Ghost particles: periodic images now, another rank's border particles with MPI, made by one
- * mechanism (as LAMMPS' and CoMD's halo exchanges make them).
+/* Ghost particles: periodic images and another rank's particles near this rank's box, made by one
+ * mechanism (the halo exchange of CoMD and LAMMPS, in one stage because the boxes are not a grid).
  *
- * A ghost is made by a swap: one side of the box in one direction. At each neighbour-list build,
- * the swaps run in order (x low, x high, y low, ...); each selects the particles within the
- * list's cutoff of its side, real ones and the ghosts earlier swaps made (so edge and corner
- * images come out of the x swaps' ghosts sent on by the y and z swaps), packs their PF_BORDER
- * fields (particles.h) with the periodic shift added to the position at pack time, and unpacks
- * them after the real particles, at indices p->n .. p->n + ghosts.n - 1. Before each force
+ * The rank's box is its part of the decomposition (decompose.h; the whole domain on one rank).
+ * At each neighbour-list build, each real particle is sent to every (rank, periodic image) whose
+ * box lies within the list's cutoff of the particle's image: its position plus -1, 0 or +1
+ * periods in each periodic direction (the image 0 to this rank itself being the particle). What
+ * goes to one rank is a swap: its send list (particle, shift) is fixed until the next build, in
+ * the order of the images and, within one, of the particles. A swap packs its particles' PF_BORDER
+ * fields (particles.h) with each one's shift added to its position at pack time; the receiver
+ * unpacks them after its real particles, at p->n .. p->n + ghosts.n - 1, the ghosts of each sending
+ * rank together, in the order of the ranks (this one's own images among them). Before each force
  * computation the same swaps send the PF_FORWARD fields (position, velocity, spin) again, with the
- * same shifts, and zero the ghosts' PF_REVERSE fields; after the pair forces they run backwards,
- * sending each ghost's PF_REVERSE fields (force, torque) to be summed onto what it was made from.
- * Which particles a swap sends and where their ghosts land is fixed between builds.
+ * same shifts, into the same slots, and the ghosts' PF_REVERSE fields are zeroed; after the pair
+ * forces each ghost's PF_REVERSE fields (force, torque) go back and are summed onto the particle it
+ * was made from.
  *
- * In a serial run a periodic direction's swaps send to this process itself, so the pack writes
- * straight into the receiving ghosts and the fold adds straight onto the sources (no buffer;
- * particles.h's copy_roles and fold_roles, the buffered gather/put/take/scatter in one pass). A swap that would reach another rank is the MPI halo's (issue 23): the packing,
- * the shifts and the order stay as they are and only the transport changes. The neighbour list
- * pairs real particles with ghosts like any other particle, so the force kernels know nothing of
- * periodicity. Only the first n particles are real: integration, walls, output and the coupling
- * never see a ghost. */
+ * A swap to this rank itself (a periodic image) copies straight into the ghost slots and folds
+ * straight back (particles.h's copy_roles and fold_roles: no buffer); a swap to another rank is
+ * packed into a buffer and sent (comm.h). Everything else is the same, so a serial periodic run
+ * and a parallel one differ only in where the bytes go. The neighbour list pairs real particles
+ * with ghosts like any other particle, so the force kernels know nothing of periodicity or ranks.
+ * Only the first n particles are real: integration, walls, output and the coupling never see a
+ * ghost. A corner image comes straight from its particle (its shift is the sum of two or three
+ * periods), not from a ghost of a ghost: there is one stage. */
 #ifndef DEM_GHOSTS_H
 #define DEM_GHOSTS_H
 
 #include "particles.h"
 
 typedef struct dem_ghost_swap {
-    int dim;               /* 0, 1, 2: x, y, z */
-    int side;              /* -1: the particles near the low side, +1: near the high side */
-    double shift[3];       /* added to a sent position [m]: the period where the swap wraps */
+    int rank;              /* where the ghosts go (this rank: periodic images) */
     int nsend, send_capacity;
-    int *send;             /* the local particles (real or ghost) this swap sends */
-    int first;             /* its ghosts are p->n + first .. p->n + first + nsend - 1 */
+    int *send;             /* the real particles this swap sends */
+    dem_vec3 *shift;       /* added to each one's position [m]: its image's periods */
 } dem_ghost_swap;
 
 typedef struct dem_ghost_list {
-    int n;                 /* ghosts in all swaps */
-    int nswap;
-    dem_ghost_swap swap[6];
+    int n;                 /* ghosts held here: slots p->n .. p->n + n - 1 */
+    int nswap, swap_capacity;
+    dem_ghost_swap *swap;  /* in order of rank */
+    int nranks;
+    int *send_count;       /* per rank: particles sent to it by all its swaps */
+    int *recv_count;       /* per rank: ghosts it sent here */
+    int *recv_first;       /* per rank: where its ghosts start (slot - p->n) */
+    /* scratch of the build and the exchanges */
+    size_t *send_bytes, *send_offset, *recv_bytes, *recv_offset;
+    int64_t *count_out, *count_in;
+    unsigned char *send_buf, *recv_buf;
+    size_t send_buf_capacity, recv_buf_capacity;
+    int *pick_key, *pick_index, *key_count;
+    long pick_capacity;
+    int key_capacity;
 } dem_ghost_list;
 
 struct dem_system;
 void dem_ghosts_free(dem_ghost_list *g);
-/* Make the ghosts of the particles within cutoff [m] of a periodic side (after the real
- * particles were wrapped into the box). */
+/* Make the ghosts of the real particles within cutoff [m] of another rank's box or of a periodic
+ * side (after the particles were wrapped into the domain and migrated to their owners). */
 void dem_ghosts_build(struct dem_system *s, double cutoff);
 /* The ghosts' positions, velocities and angular velocities from their sources; forces zeroed. */
 void dem_ghosts_update(struct dem_system *s);
-/* Add the ghosts' forces and torques onto their sources, and so onto the real owners. */
+/* Add the ghosts' forces and torques onto their sources. */
 void dem_ghosts_fold_forces(struct dem_system *s);
-/* The real particle ghost k (0 .. n - 1) copies, following ghosts of ghosts; for tests and
- * reports (a ghost from another rank has no local owner: -1 then). */
+/* The real particle ghost k (0 .. n - 1) is an image of, for tests and reports; -1 for a ghost
+ * from another rank (it has no local owner). */
 int dem_ghosts_owner(const struct dem_system *s, int k);
 
 #endif

@@ -5,6 +5,7 @@
 #include "error.h"
 #include "ghosts.h"
 #include "neighbour.h"
+#include "reduce.h"
 #include "system.h"
 
 void dem_neighbour_init(dem_neighbour_list *nl, double skin, int sort_interval, int history_size)
@@ -22,8 +23,7 @@ void dem_neighbour_free(dem_neighbour_list *nl)
     memset(nl, 0, sizeof *nl);
 }
 
-/* Wrap periodic coordinates into the box; stop if a particle left a closed side. */
-static void wrap_and_check_domain(dem_system *s)
+void dem_neighbour_wrap(dem_system *s)
 {
     dem_particles *p = &s->p;
     for (int i = 0; i < p->n; i++) {
@@ -59,11 +59,13 @@ static int cell_coord(const dem_neighbour_list *nl, double x, int d)
     return c;
 }
 
-/* The list's cutoff: the largest diameter + skin + the normal model's reach [m]. */
+/* The list's cutoff: the largest diameter + skin + the normal model's reach [m], over all ranks
+ * (the halo, ghosts.h, is the same width on every rank). */
 static double list_cutoff(const dem_system *s)
 {
     double rmax = 0.0;
     for (int i = 0; i < s->p.n; i++) rmax = fmax(rmax, s->p.radius[i]);
+    dem_reduce_doubles(&rmax, 1, DEM_REDUCE_MAX);
     return 2.0 * rmax + s->nlist.skin + s->nlist.reach;
 }
 
@@ -134,7 +136,7 @@ void dem_neighbour_rebuild(dem_system *s)
 {
     dem_neighbour_list *nl = &s->nlist;
     dem_particles *p = &s->p;
-    wrap_and_check_domain(s);
+    dem_neighbour_wrap(s);
     const double cutoff = list_cutoff(s);
     for (int d = 0; d < 3; d++)
         if (s->periodic[d] && s->domain_max[d] - s->domain_min[d] < 3.0 * cutoff)
@@ -172,10 +174,12 @@ void dem_neighbour_rebuild(dem_system *s)
                     const int cell = (z * ny + y) * nx + x;
                     for (int m = nl->cell_start[cell]; m < nl->cell_start[cell + 1]; m++) {
                         const int j = nl->cell_order[m];
-                        /* a real pair once (j > i); a pair with an image once: its mirror pair
-                         * (j's owner with the image of i) exists too, and only the one whose real
-                         * particle has the lower id is kept */
-                        if (j < p->n ? j <= i : id[j] <= id[i]) continue;
+                        /* every pair once, under the particle with the lower id: a pair with a
+                         * ghost has its mirror (the ghost's owner with the ghost of i, here for a
+                         * periodic image, on another rank for a ghost from there), and the one
+                         * rule keeps a contact with the same particle whether its partner is real
+                         * or a ghost, so that its history goes where that particle goes (migrate.h) */
+                        if (id[j] <= id[i]) continue;
                         if (body_i && body_i == body[j]) continue;   /* one rigid body: no contact */
                         double d2 = 0.0;
                         for (int d = 0; d < 3; d++) {

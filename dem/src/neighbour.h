@@ -1,5 +1,6 @@
-/* Linked cells and a half Verlet list with skin. Each pair is stored once (under one of its
- * particles, a real one; the other may be a periodic image, ghosts.h), with its contact history
+/* Linked cells and a half Verlet list with skin. Each pair is stored once (under the one of its
+ * two particles with the lower id, a real one; the other may be a ghost: a periodic image or another
+ * rank's particle, ghosts.h), with its contact history
  * beside it; contacts.c carries the history across rebuilds and sorts by particle ids.
  * The list is rebuilt only when some particle has moved more than half the skin since the
  * last build (dem_system_step measures that while it moves the particles). Every sortInterval-th rebuild first re-orders the particles by cell, so that
@@ -43,6 +44,8 @@ typedef struct dem_neighbour_list {
 struct dem_system;
 void dem_neighbour_init(dem_neighbour_list *nl, double skin, int sort_interval, int history_size);
 void dem_neighbour_free(dem_neighbour_list *nl);
+/* Wrap periodic coordinates into the box; stop if a particle left a closed side. */
+void dem_neighbour_wrap(struct dem_system *s);
 /* Rebuild: wrap the particles into the box, sort them by cell when due, make the periodic
  * images, build the list; every pair's history starts at zero. */
 void dem_neighbour_rebuild(struct dem_system *s);

@@ -125,7 +125,7 @@ size_t dem_particles_role_size(unsigned roles)
 }
 
 size_t dem_particles_gather_roles(const dem_particles *p, unsigned roles, const int *idx, int count,
-                                  const double shift[3], void *buf)
+                                  const dem_vec3 *shift, void *buf)
 {
     char *out = buf;
     for (int k = 0; k < PARTICLE_FIELD_COUNT; k++) {
@@ -134,12 +134,9 @@ size_t dem_particles_gather_roles(const dem_particles *p, unsigned roles, const 
         const size_t e = f->element_size;
         if (k == PF_FIELD_x) {   /* the position, shifted: as doubles */
             double (*to)[3] = (double (*)[3])(void *)out;
-            const double s0 = shift ? shift[0] : 0.0, s1 = shift ? shift[1] : 0.0, s2 = shift ? shift[2] : 0.0;
             for (int m = 0; m < count; m++) {
                 const double *x = p->x[idx[m]];
-                to[m][0] = x[0] + s0;
-                to[m][1] = x[1] + s1;
-                to[m][2] = x[2] + s2;
+                for (int q = 0; q < 3; q++) to[m][q] = shift ? x[q] + shift[m][q] : x[q];
             }
         } else {
             const char *from = particle_field_data(p, f);
@@ -162,20 +159,17 @@ void dem_particles_put_roles(dem_particles *p, unsigned roles, int first, int co
     }
 }
 
-void dem_particles_copy_roles(dem_particles *p, unsigned roles, const int *idx, int count, const double shift[3],
+void dem_particles_copy_roles(dem_particles *p, unsigned roles, const int *idx, int count, const dem_vec3 *shift,
                               int first)
 {
     for (int k = 0; k < PARTICLE_FIELD_COUNT; k++) {
         const dem_particle_field *f = &dem_particle_fields[k];
         if (!(f->flags & roles)) continue;
         if (k == PF_FIELD_x) {
-            const double s0 = shift ? shift[0] : 0.0, s1 = shift ? shift[1] : 0.0, s2 = shift ? shift[2] : 0.0;
             for (int m = 0; m < count; m++) {
                 const double *x = p->x[idx[m]];
                 double *to = p->x[first + m];
-                to[0] = x[0] + s0;
-                to[1] = x[1] + s1;
-                to[2] = x[2] + s2;
+                for (int q = 0; q < 3; q++) to[q] = shift ? x[q] + shift[m][q] : x[q];
             }
         } else {
             char *data = particle_field_data(p, f);

@@ -177,8 +177,8 @@ int dem_particles_unpack(dem_particles *p, const void *buf);
  * for the ghosts' exchanges, field by field (the buffer holds each field's elements for all the
  * particles in turn, so that every copy is a plain loop or one memcpy):
  *   role_size     bytes per particle;
- *   gather_roles  particles idx[0 .. count-1] into buf, `shift` [m] (NULL: none) added to the
- *                 positions; returns the bytes;
+ *   gather_roles  particles idx[0 .. count-1] into buf, shift[m] [m] (NULL: none) added to the
+ *                 position of idx[m] (a periodic image's period); returns the bytes;
  *   put_roles     buf onto particles first .. first + count - 1 (overwritten);
  *   copy_roles    gather_roles and put_roles in one pass, without the buffer (a swap to itself);
  *   fold_roles    take_roles and scatter_add_roles in one pass, without the buffer;
@@ -188,9 +188,9 @@ int dem_particles_unpack(dem_particles *p, const void *buf);
  *   zero_roles    particles first .. first + count - 1: the mask's fields zeroed. */
 size_t dem_particles_role_size(unsigned roles);
 size_t dem_particles_gather_roles(const dem_particles *p, unsigned roles, const int *idx, int count,
-                                  const double shift[3], void *buf);
+                                  const dem_vec3 *shift, void *buf);
 void dem_particles_put_roles(dem_particles *p, unsigned roles, int first, int count, const void *buf);
-void dem_particles_copy_roles(dem_particles *p, unsigned roles, const int *idx, int count, const double shift[3],
+void dem_particles_copy_roles(dem_particles *p, unsigned roles, const int *idx, int count, const dem_vec3 *shift,
                               int first);
 void dem_particles_take_roles(const dem_particles *p, unsigned roles, int first, int count, void *buf);
 void dem_particles_scatter_add_roles(dem_particles *p, unsigned roles, const int *idx, int count, const void *buf);

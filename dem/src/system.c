@@ -4,7 +4,9 @@
 #include <string.h>
 #include <time.h>
 
+#include "comm.h"
 #include "error.h"
+#include "migrate.h"
 #include "system.h"
 #include "reduce.h"
 #include "timestep.h"
@@ -26,6 +28,7 @@ void dem_system_free(dem_system *s)
     dem_neighbour_free(&s->nlist);
     dem_walls_free(s);
     dem_ghosts_free(&s->ghosts);
+    dem_decomposition_free(&s->decomp);
     dem_contact_rows_free(&s->carried);
     free(s->outlets);
     dem_streams_free(s);
@@ -64,6 +67,7 @@ static void check_step_motion(const dem_system *s)
 static void remake_lists(dem_system *s)
 {
     dem_contacts_gather_rows(s, &s->carried);
+    dem_migrate(s);   /* particles that left this rank's box, with their contacts (a parallel run) */
     dem_neighbour_rebuild(s);
     dem_walls_build_candidates(s);
     dem_contacts_scatter_rows(s, &s->carried);
@@ -100,12 +104,30 @@ static void prepare_models(dem_system *s)
         dem_streams_diameters(s, -1, &dmin, &dmax);   /* and the particles still to come */
         double rmax = 0.5 * dmax;
         for (int i = 0; i < s->p.n; i++) rmax = fmax(rmax, s->p.radius[i]);
+        dem_reduce_doubles(&rmax, 1, DEM_REDUCE_MAX);
         for (int a = 0; a < t->ntypes; a++)
             for (int b = 0; b < t->ntypes; b++)
                 s->contact_reach = fmax(s->contact_reach, fmax(normal->reach(materials_pair(t, a, b), 0.5 * rmax),
                                                                normal->reach(materials_pair(t, a, b), rmax)));
     }
     s->nlist.reach = s->contact_reach;
+}
+
+/* The ranks' boxes (decompose.h), by particle count: at set-up every rank holds every particle
+ * (the case's insertion draws them all, a restart reads the snapshot whole), so the tree is the
+ * same at any rank count for the same particles; then each rank keeps what its box owns. */
+static void decompose(dem_system *s)
+{
+    const int nranks = dem_comm_size();
+    if (nranks > 1) {
+        const char *what = s->bodies.n ? "multisphere bodies" : s->nstreams ? "insertion streams (a stream's inserts)"
+                           : s->noutlets ? "outlets" : NULL;
+        if (what)
+            dem_fatal("%s are not supported in a parallel run yet (%d ranks): run this case on one rank", what, nranks);
+    }
+    dem_decomposition_free(&s->decomp);
+    dem_decompose_rcb(&s->decomp, nranks, s->domain_min, s->domain_max, s->p.n, (const dem_vec3 *)s->p.x, NULL);
+    dem_migrate_keep_owned(s);
 }
 
 long dem_system_setup_with_contacts(dem_system *s, const dem_contact_store *saved, int compute_forces)
@@ -132,6 +154,7 @@ long dem_system_setup_with_contacts(dem_system *s, const dem_contact_store *save
         for (int i = 0; i < s->p.n; i++) rmin = fmin(rmin, s->p.radius[i]);
         s->nlist.skin = isfinite(rmin) ? 0.2 * rmin : 1e-3;
     }
+    decompose(s);
     if (!s->balance_started) {   /* a fresh run: the initial particles count as inserted */
         s->inserted = dem_lifecycle_held(s);
         s->balance_started = 1;

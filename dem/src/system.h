@@ -5,6 +5,7 @@
 #include "bodies.h"
 #include "contact/models.h"
 #include "contacts.h"
+#include "decompose.h"
 #include "ghosts.h"
 #include "stage_timer.h"
 #include "insert_stream.h"
@@ -37,7 +38,8 @@ typedef struct dem_system {
     dem_symmetry_plane symmetry_planes[DEM_MAX_SYMMETRY_PLANES];
 
     dem_neighbour_list nlist;
-    dem_ghost_list ghosts;                /* periodic images, stored after the particles (ghosts.h) */
+    dem_decomposition decomp;             /* each rank's box (decompose.h): one part, the domain, serially */
+    dem_ghost_list ghosts;                /* periodic images and other ranks' particles, after the particles (ghosts.h) */
     dem_contact_rows carried;             /* the contacts' history across a rebuild (contacts.h) */
 
     /* the life cycle during the run (lifecycle.h) */

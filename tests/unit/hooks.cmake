@@ -30,3 +30,14 @@ foreach(np 2 4)
   set_tests_properties(decompose_mpi_${np} PROPERTIES
                        ENVIRONMENT "OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1")
 endforeach()
+# The DEM on 1, 2 and 4 ranks (halo, migration with contact history): the bed of the serial run to
+# 1e-12 m after 100 steps, no particle lost or duplicated at any step.
+add_executable(test_dem_parallel ${CMAKE_CURRENT_SOURCE_DIR}/mpi/test_dem_parallel.c)
+target_include_directories(test_dem_parallel PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/validation)
+target_link_libraries(test_dem_parallel dem_mpi)
+foreach(np 1 2 4)
+  add_test(NAME dem_parallel_${np}
+           COMMAND ${MPIEXEC_EXECUTABLE} ${MPIEXEC_NUMPROC_FLAG} ${np} --oversubscribe $<TARGET_FILE:test_dem_parallel>)
+  set_tests_properties(dem_parallel_${np} PROPERTIES
+                       ENVIRONMENT "OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1")
+endforeach()

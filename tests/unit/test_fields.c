@@ -239,7 +239,7 @@ static void check_copy_and_pack(void)
 }
 
 /* 6. The ghosts' roles (ghosts.h), field by field: a border gather of particles (2, 5) carries
- *    exactly the PF_BORDER fields onto 9, 10 with the shift added to the position and nothing else
+ *    exactly the PF_BORDER fields onto 9, 10 with each one's shift added to its position and nothing else
  *    changed; the same for forward and reverse; take + scatter-add sums (doubles only, a repeated
  *    index twice); zeroing covers its range only. */
 static void check_roles(void)
@@ -250,7 +250,7 @@ static void check_roles(void)
     const unsigned roles[3] = {PF_BORDER, PF_FORWARD, PF_REVERSE};
     const char *names[3] = {"border", "forward", "reverse"};
     unsigned char *buf = malloc(2 * dem_particles_role_size(PF_BORDER | PF_FORWARD | PF_REVERSE) + 1);
-    const double shift[3] = {0.5, -2.0, 0.0};
+    const dem_vec3 shift[2] = {{0.5, -2.0, 0.0}, {-1.5, 0.0, 3.0}};   /* each particle its own image */
     const int from[2] = {2, 5};
     for (int r = 0; r < 3; r++) {
         size_t bytes = 0;
@@ -268,7 +268,7 @@ static void check_roles(void)
                     CHECK(holds(&p, k, to, to), "%s: %s (not in the role) changed", names[r], dem_particle_fields[k].member);
                 } else if (k == PF_FIELD_x) {
                     int ok = 1;
-                    for (int q = 0; q < 3; q++) ok &= p.x[to][q] == p.x[from[m]][q] + shift[q];
+                    for (int q = 0; q < 3; q++) ok &= p.x[to][q] == p.x[from[m]][q] + shift[m][q];
                     CHECK(ok, "%s: the position is not the source's plus the shift", names[r]);
                 } else {
                     CHECK(holds(&p, k, to, from[m]), "%s: %s did not travel", names[r], dem_particle_fields[k].member);

@@ -1,0 +1,149 @@
+/* Migration of particles and their contacts between ranks (migrate.h). */
+#include <stdlib.h>
+#include <string.h>
+
+#include "comm.h"
+#include "error.h"
+#include "migrate.h"
+#include "system.h"
+
+/* Remove the particles marked with a destination other than `me`, from the highest index down (the
+ * last particle takes a removed one's place: most keep their index, and their contacts' rows). */
+static void remove_leaving(dem_particles *p, const int *dest, int n, int me)
+{
+    for (int i = n - 1; i >= 0; i--)
+        if (dest[i] != me) dem_particles_remove(p, i);
+}
+
+void dem_migrate_keep_owned(dem_system *s)
+{
+    if (dem_comm_size() == 1) return;
+    dem_particles *p = &s->p;
+    dem_neighbour_wrap(s);
+    const int n = p->n, me = dem_comm_rank();
+    int *dest = dem_malloc((size_t)(n ? n : 1) * sizeof(int));
+    for (int i = 0; i < n; i++) dest[i] = dem_decomposition_owner(&s->decomp, p->x[i]);
+    remove_leaving(p, dest, n, me);
+    free(dest);
+}
+
+static void put_i64(unsigned char **at, int64_t v)
+{
+    memcpy(*at, &v, sizeof v);
+    *at += sizeof v;
+}
+
+static int64_t get_i64(const unsigned char **at)
+{
+    int64_t v;
+    memcpy(&v, *at, sizeof v);
+    *at += sizeof v;
+    return v;
+}
+
+void dem_migrate(dem_system *s)
+{
+    if (dem_comm_size() == 1) return;
+    dem_particles *p = &s->p;
+    dem_contact_rows *cr = &s->carried;
+    const int me = dem_comm_rank(), nr = dem_comm_size(), hs = s->history_size, n = p->n;
+    dem_neighbour_wrap(s);   /* ownership goes by the position in the domain */
+    int *dest = dem_malloc((size_t)(n ? n : 1) * sizeof(int));
+    int64_t *np_to = dem_calloc((size_t)nr, sizeof(int64_t)), *nc_to = dem_calloc((size_t)nr, sizeof(int64_t));
+    int64_t *bytes_to = dem_malloc((size_t)nr * sizeof(int64_t)), *bytes_from = dem_malloc((size_t)nr * sizeof(int64_t));
+    for (int i = 0; i < n; i++) {
+        dest[i] = dem_decomposition_owner(&s->decomp, p->x[i]);
+        if (dest[i] != me) np_to[dest[i]]++;
+    }
+    /* the contacts by row were gathered at the particles' present indices (no particle was added,
+     * removed or moved since the last build: streams and outlets are serial for now) */
+    const int rows = cr->rows < n ? cr->rows : n;
+    for (int i = 0; i < rows; i++)
+        if (dest[i] != me && cr->row_id[i] == p->id[i]) nc_to[dest[i]] += cr->start[i + 1] - cr->start[i];
+    for (long c = cr->start[cr->rows]; c < cr->count; c++) {   /* the wall contacts: partner is the index */
+        const int i = (int)cr->partner_id[c];
+        if (i < rows && dest[i] != me && cr->row_id[i] == p->id[i]) nc_to[dest[i]]++;
+    }
+    const size_t ps = dem_particles_pack_size(), cs = 2 * sizeof(int64_t) + (size_t)hs * sizeof(double);
+    size_t *send_bytes = dem_malloc((size_t)nr * sizeof(size_t)), *send_offset = dem_malloc((size_t)nr * sizeof(size_t));
+    size_t *recv_bytes = dem_malloc((size_t)nr * sizeof(size_t)), *recv_offset = dem_malloc((size_t)nr * sizeof(size_t));
+    size_t out = 0;
+    for (int r = 0; r < nr; r++) {
+        send_bytes[r] = r == me ? 0 : 2 * sizeof(int64_t) + (size_t)np_to[r] * ps + (size_t)nc_to[r] * cs;
+        send_offset[r] = out;
+        out += send_bytes[r];
+        bytes_to[r] = (int64_t)send_bytes[r];
+    }
+    dem_comm_counts(bytes_to, bytes_from);
+    size_t in = 0;
+    for (int r = 0; r < nr; r++) {
+        recv_bytes[r] = r == me ? 0 : (size_t)bytes_from[r];
+        recv_offset[r] = in;
+        in += recv_bytes[r];
+    }
+    unsigned char *send = dem_malloc(out + 1), *recv = dem_malloc(in + 1);
+    unsigned char **part_at = dem_malloc((size_t)nr * sizeof *part_at), **contact_at = dem_malloc((size_t)nr * sizeof *contact_at);
+    for (int r = 0; r < nr; r++) {
+        if (r == me) continue;
+        unsigned char *at = send + send_offset[r];
+        put_i64(&at, np_to[r]);
+        put_i64(&at, nc_to[r]);
+        part_at[r] = at;
+        contact_at[r] = at + (size_t)np_to[r] * ps;
+    }
+    for (int i = 0; i < n; i++) {
+        const int r = dest[i];
+        if (r == me) continue;
+        part_at[r] += dem_particles_pack(p, i, part_at[r]);
+        if (i >= rows || cr->row_id[i] != p->id[i]) continue;
+        for (int c = cr->start[i]; c < cr->start[i + 1]; c++) {
+            put_i64(&contact_at[r], p->id[i]);
+            put_i64(&contact_at[r], cr->partner_id[c]);
+            memcpy(contact_at[r], cr->history + (size_t)c * hs, (size_t)hs * sizeof(double));
+            contact_at[r] += (size_t)hs * sizeof(double);
+            cr->matched[c] = 1;   /* gone with its particle */
+        }
+    }
+    for (int w = 0; w < s->nwalls; w++)
+        for (int c = cr->wall_start[w]; c < cr->wall_start[w + 1]; c++) {
+            const int i = (int)cr->partner_id[c];
+            if (i >= rows || dest[i] == me || cr->row_id[i] != p->id[i]) continue;
+            put_i64(&contact_at[dest[i]], contact_wall_key(w));
+            put_i64(&contact_at[dest[i]], p->id[i]);
+            memcpy(contact_at[dest[i]], cr->history + (size_t)c * hs, (size_t)hs * sizeof(double));
+            contact_at[dest[i]] += (size_t)hs * sizeof(double);
+            cr->matched[c] = 1;
+        }
+    dem_comm_exchange(send, send_bytes, send_offset, recv, recv_bytes, recv_offset);
+    remove_leaving(p, dest, n, me);
+    double *h = dem_malloc((size_t)(hs ? hs : 1) * sizeof(double));
+    for (int r = 0; r < nr; r++) {
+        if (r == me || recv_bytes[r] == 0) continue;
+        const unsigned char *at = recv + recv_offset[r];
+        const int64_t np = get_i64(&at), nc = get_i64(&at);
+        for (int64_t k = 0; k < np; k++) {
+            dem_particles_unpack(p, at);
+            at += ps;
+        }
+        for (int64_t k = 0; k < nc; k++) {
+            const int64_t first = get_i64(&at), second = get_i64(&at);
+            memcpy(h, at, (size_t)hs * sizeof(double));
+            at += (size_t)hs * sizeof(double);
+            dem_contact_store_put(&cr->spill, first, second, h);
+        }
+    }
+    free(h);
+    free(send);
+    free(recv);
+    free(part_at);
+    free(contact_at);
+    free(send_bytes);
+    free(send_offset);
+    free(recv_bytes);
+    free(recv_offset);
+    free(bytes_to);
+    free(bytes_from);
+    free(np_to);
+    free(nc_to);
+    free(dest);
+}
