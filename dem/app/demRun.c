@@ -1,7 +1,11 @@
 /* demRun <caseDir> [-restart] [-phases n1,n2,...]
  * Standalone DEM run of <caseDir>/constant/demProperties; particles go to
  * <caseDir>/particles.h5 (+ .xdmf for ParaView). With -phases the run is a benchmark: it takes
- * the given step counts one after another and prints particle-steps per second for each. */
+ * the given step counts one after another and prints particle-steps per second for each.
+ *
+ * Under mpirun (mpirun -np N demRun <caseDir>) the DEM is decomposed over the N ranks (issue 23):
+ * every rank reads the case and inserts every particle, keeps the ones its box owns, and they write
+ * one particles.h5 together; rank 0 prints, and an error on any rank ends them all. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -9,6 +13,9 @@
 #include <time.h>
 
 #include "case.h"
+#include "comm.h"
+#include "dem_mpi.h"
+#include "reduce.h"
 #include "error.h"
 #include "io.h"
 #include "restart.h"
@@ -28,6 +35,42 @@ static double cpu_clock(void)
     struct timespec t;
     clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
     return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+/* Sums over the ranks (the identity serially): what the log reports is the whole system's. */
+static double sum_ranks(double v)
+{
+    dem_reduce_doubles(&v, 1, DEM_REDUCE_SUM);
+    return v;
+}
+
+/* Started by mpirun (Open MPI's or a PMI launcher's variables): MPI is started and the DEM uses it.
+ * A plain `demRun case` makes no MPI call (no singleton start-up). */
+static int start_mpi(int *argc, char ***argv)
+{
+    if (!getenv("OMPI_COMM_WORLD_SIZE") && !getenv("PMIX_RANK") && !getenv("PMI_RANK")) return 0;
+    MPI_Init(argc, argv);
+    dem_mpi_use(MPI_COMM_WORLD);
+    dem_mpi_set_fatal_abort();
+    if (dem_comm_rank() != 0 && !freopen("/dev/null", "w", stdout)) return 1;   /* rank 0 prints */
+    return 1;
+}
+
+/* The bytes each rank sent per step (halo and migration), against what CFDEMcoupling's twoWayMPI
+ * way would move: every particle's position, velocity and spin to every rank each step. */
+static void report_exchange(const dem_system *s, long steps, double all)
+{
+    const int size = dem_comm_size();
+    double sent[2] = {dem_comm_bytes_sent(), dem_comm_bytes_sent()};
+    dem_reduce_doubles(&sent[0], 1, DEM_REDUCE_SUM);
+    dem_reduce_doubles(&sent[1], 1, DEM_REDUCE_MAX);
+    const double per_step = steps > 0 ? sent[0] / size / steps : 0.0, most = steps > 0 ? sent[1] / steps : 0.0;
+    const double allgather = all * (double)dem_particles_role_size(PF_FORWARD) * (size - 1) / size;
+    printf("decomposition: cut again %ld times as the load moved (each time the fullest rank held > 1.1 x the "
+           "mean)\n", s->rebalances);
+    printf("exchange on %d ranks: %.4g bytes sent per rank per step (mean; the most %.4g), against %.4g for an "
+           "all-gather of every particle's position, velocity and spin (%.1f%% of it)\n",
+           size, per_step, most, allgather, allgather > 0 ? 100.0 * per_step / allgather : 0.0);
 }
 
 static void usage(void)
@@ -56,9 +99,13 @@ static double run_steps(dem_system *s, long nsteps, long write_every, dem_partic
 {
     const double start = wall_clock();
     double next_report = start + progress_interval, particle_steps = 0.0;
+    /* every rank's particles: a parallel run has no streams or outlets (set-up refuses them), so
+     * its count is that of the start; a serial one counts as it goes */
+    const int parallel = dem_comm_size() > 1;
+    const double all_particles = sum_ranks(s->p.n);
     for (long k = 1; k <= nsteps; k++) {
         dem_system_step(s);
-        particle_steps += s->p.n;
+        particle_steps += parallel ? all_particles : s->p.n;
         if (write_every > 0 && s->step % write_every == 0) {
             write_snapshot(w, s);
             dem_system_relist(s);   /* as a restart from this snapshot will: the two runs stay equal */
@@ -68,8 +115,8 @@ static double run_steps(dem_system *s, long nsteps, long write_every, dem_partic
             if (now >= next_report) {
                 const double rate = particle_steps / (now - start);
                 const double eta = (double)(nsteps - k) * (now - start) / (double)k;
-                printf("step %ld  t = %.6g s  %5.1f %%  %d particles  %.3g particle-steps/s  "
-                       "ETA %.0f s\n", s->step, s->time, 100.0 * k / nsteps, s->p.n, rate, eta);
+                printf("step %ld  t = %.6g s  %5.1f %%  %.0f particles  %.3g particle-steps/s  "
+                       "ETA %.0f s\n", s->step, s->time, 100.0 * k / nsteps, parallel ? all_particles : s->p.n, rate, eta);
                 fflush(stdout);
                 next_report = now + progress_interval;
             }
@@ -80,6 +127,7 @@ static double run_steps(dem_system *s, long nsteps, long write_every, dem_partic
 
 int main(int argc, char **argv)
 {
+    const int mpi = start_mpi(&argc, &argv);
     if (argc < 2) usage();
     const char *case_dir = argv[1];
     int restart = 0;
@@ -114,7 +162,7 @@ int main(int argc, char **argv)
     if (restart) {
         if (dem_restart_read(&s, base, NAN, 0.0, &saved) != 0)
             dem_fatal("%s.h5: no complete snapshot to restart from", base);
-        printf("restart from %s.h5 at t = %g s (step %ld), %d particles\n", base, s.time, s.step, s.p.n);
+        printf("restart from %s.h5 at t = %g s (step %ld), %d particles\n", base, s.time, s.step, s.p.n);   /* all: not yet decomposed */
     }
     const double vmax = rs.max_expected_velocity > 0 ? rs.max_expected_velocity : dem_case_default_max_velocity(&s);
     dem_timestep_check(&s, vmax, rs.timestep_override, rs.timestep_source);
@@ -138,8 +186,8 @@ int main(int argc, char **argv)
             const double ps = run_steps(&s, n, 0, w, rs.progress_interval);
             particle_steps += ps;
             const double secs = wall_clock() - start, cpu = cpu_clock() - cpu_start;
-            printf("PHASE %d steps=%ld particles=%d wall_s=%.3f particle_steps_per_s=%.4g cpu_s=%.3f\n", k++, n,
-                   s.p.n, secs, secs > 0 ? ps / secs : 0.0, cpu);
+            printf("PHASE %d steps=%ld particles=%.0f wall_s=%.3f particle_steps_per_s=%.4g cpu_s=%.3f\n", k++, n,
+                   sum_ranks(s.p.n), secs, secs > 0 ? ps / secs : 0.0, cpu);
             total_steps += n;
             c = *end == ',' ? end + 1 : end;
         }
@@ -148,7 +196,9 @@ int main(int argc, char **argv)
         /* a writeInterval longer than the run: the final state only (in double: 1e9 / 1e-12 is no long) */
         const double per_write = rs.write_interval / s.dt;
         const long write_every = rs.write_interval > 0 && per_write < (double)nsteps ? (long)fmax(1.0, llround(per_write)) : 0;
-        printf("running %ld steps of %g s to t = %g s, %d particles\n", nsteps, s.dt, rs.end_time, s.p.n);
+        printf("running %ld steps of %g s to t = %g s, %.0f particles%s\n", nsteps, s.dt, rs.end_time, sum_ranks(s.p.n),
+               mpi ? " (decomposed)" : "");
+        if (dem_comm_size() > 1) printf("on %d ranks: rank 0 holds %d particles\n", dem_comm_size(), s.p.n);
         particle_steps = run_steps(&s, nsteps, write_every, w, rs.progress_interval);
         total_steps = nsteps;
     }
@@ -156,19 +206,27 @@ int main(int argc, char **argv)
     write_snapshot(w, &s);
     dem_io_close_writer(w);
     const double secs = wall_clock() - t0;
+    const double energy = sum_ranks(dem_system_kinetic_energy(&s)), all = sum_ranks(s.p.n);
     printf("done: t = %g s, %ld steps in %.2f s wall (%.3g particle-steps/s), %ld neighbour "
            "builds, %ld sorts, kinetic energy %.6g J\n",
            s.time, total_steps, secs, secs > 0 ? particle_steps / secs : 0.0,
-           s.nlist.builds, s.nlist.sorts, dem_system_kinetic_energy(&s));
-    int prescribed = 0;
-    for (int i = 0; i < s.p.n; i++) prescribed += s.p.prescribed[i] != 0;
-    if (prescribed)
-        printf("kinetic energy: the %d prescribed particles (driven at their set velocity) left out\n", prescribed);
-    printf("neighbour list: %.2f pairs per particle (skin %g m)\n", s.p.n ? (double)s.nlist.npairs / s.p.n : 0.0, s.nlist.skin);
+           s.nlist.builds, s.nlist.sorts, energy);
+    int prescribed_here = 0;
+    for (int i = 0; i < s.p.n; i++) prescribed_here += s.p.prescribed[i] != 0;
+    const double prescribed = sum_ranks(prescribed_here);
+    if (prescribed > 0)
+        printf("kinetic energy: the %.0f prescribed particles (driven at their set velocity) left out\n", prescribed);
+    printf("neighbour list: %.2f pairs per particle (skin %g m)\n", all > 0 ? sum_ranks((double)s.nlist.npairs) / all : 0.0,
+           s.nlist.skin);
+    if (dem_comm_size() > 1) report_exchange(&s, total_steps, all);
     if (s.bodies.n)   /* each body's is in the snapshots */
         printf("multisphere: %d bodies, rotational kinetic energy %.6g J (seed 004 eq. 8, summed over the bodies)\n",
                s.bodies.n, dem_bodies_rotational_energy(&s));
     dem_stage_report(&s, total_steps);
     dem_system_free(&s);
+    if (mpi) {
+        dem_mpi_release();
+        MPI_Finalize();
+    }
     return 0;
 }

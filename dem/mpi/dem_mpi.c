@@ -5,7 +5,10 @@
 #include <stdlib.h>
 
 #include "comm.h"
+#include <hdf5.h>
+
 #include "error.h"
+#include "io.h"
 #include "reduce.h"
 
 static MPI_Comm dem_comm = MPI_COMM_NULL;
@@ -53,6 +56,18 @@ static void exchange(const void *send, const size_t *send_bytes, const size_t *s
     MPI_Waitall(nreq, requests, MPI_STATUSES_IGNORE);
 }
 
+/* HDF5's MPI-IO driver for the writer's shared file (io.h) */
+static int use_mpio(int64_t fapl, void *context)
+{
+    return H5Pset_fapl_mpio((hid_t)fapl, *(MPI_Comm *)context, MPI_INFO_NULL) < 0 ? -1 : 0;
+}
+
+static int collective(int64_t dxpl, void *context)
+{
+    (void)context;
+    return H5Pset_dxpl_mpio((hid_t)dxpl, H5FD_MPIO_COLLECTIVE) < 0 ? -1 : 0;
+}
+
 static void counts(const int64_t *send, int64_t *recv, void *context)
 {
     MPI_Alltoall(send, 1, MPI_INT64_T, recv, 1, MPI_INT64_T, *(MPI_Comm *)context);
@@ -83,6 +98,8 @@ void dem_mpi_use(MPI_Comm comm)
     MPI_Comm_rank(dem_comm, &c.rank);
     MPI_Comm_size(dem_comm, &c.size);
     dem_set_comm_hook(&c);
+    const dem_io_parallel_hook io = {use_mpio, collective, &dem_comm};
+    dem_io_set_parallel_hook(&io);
 }
 
 void dem_mpi_set_fatal_abort(void)
@@ -94,5 +111,6 @@ void dem_mpi_release(void)
 {
     dem_set_reduce_hook(NULL);
     dem_set_comm_hook(NULL);
+    dem_io_set_parallel_hook(NULL);
     if (dem_comm != MPI_COMM_NULL) MPI_Comm_free(&dem_comm);
 }

@@ -67,8 +67,21 @@ typedef struct dem_contact_state {
 
 void dem_contact_state_free(dem_contact_state *cs);
 
+/* A parallel run (issue 23) writes one file from every rank at once, through HDF5's MPI-IO driver:
+ * each snapshot's datasets hold every rank's particles (and contacts), each rank writing its own
+ * rows, collectively; the XDMF index is written by rank 0. The MPI calls are the hook's, set by
+ * dem/mpi (dem_mpi_use); without it (serially) the file is the process's own. Reading is the
+ * same on any number of ranks: each rank reads a snapshot whole (its set-up keeps what it owns). */
+typedef struct dem_io_parallel_hook {
+    int (*use_mpio)(int64_t fapl, void *context);     /* MPI-IO on a file access list; < 0: failed */
+    int (*collective)(int64_t dxpl, void *context);   /* collective transfers on a transfer list */
+    void *context;
+} dem_io_parallel_hook;
+void dem_io_set_parallel_hook(const dem_io_parallel_hook *hook);
+
 /* base: path without extension, e.g. "case/particles". append != 0 keeps existing snapshots
- * (restart); otherwise the files are created anew. Fatal on HDF5 errors, with the path. */
+ * (restart); otherwise the files are created anew. Fatal on HDF5 errors, with the path. In a
+ * parallel run every rank calls the writer's functions alike (collective). */
 dem_particle_writer *dem_io_open_writer(const char *base, int append);
 void dem_io_write_snapshot(dem_particle_writer *w, const dem_particles *p, double time, long step);
 /* The same, with the contact history (cs may be NULL). */

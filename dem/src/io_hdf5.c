@@ -1,9 +1,9 @@
 /* Particle output and restart in HDF5 with an XDMF index; layout described in io.h.
  *
- * Serial for now: the file is opened with the default (sec2) driver. The parallel HDF5 build
- * works without MPI_Init in that case (checked with HDF5 1.10.8 / Open MPI on Debian 12), so
- * no MPI call is made here. The file access property list is made in one place
- * (make_fapl), which is where an MPI-IO driver would be selected later.
+ * Serially the file is opened with the default (sec2) driver; the parallel HDF5 build works
+ * without MPI_Init then (checked with HDF5 1.10.8 / Open MPI on Debian 12). A parallel run's
+ * writer opens it through MPI-IO (io.h's hook, in make_fapl) and every rank writes its rows of
+ * each dataset (place(): its offset in the whole), collectively; no MPI call is made here.
  *
  * Every HDF5 call is checked; HDF5's own error printing is switched off and a failure ends the
  * program through dem_fatal with the file name and the innermost HDF5 message. */
@@ -16,8 +16,10 @@
 
 #include <hdf5.h>
 
+#include "comm.h"
 #include "error.h"
 #include "io.h"
+#include "reduce.h"
 
 typedef struct snapshot_info {
     long index;        /* group /snapshots/<index> */
@@ -103,10 +105,52 @@ static const char *file_name_part(const char *path)
     return slash ? slash + 1 : path;
 }
 
-/* The one place where the file access property list is made (MPI-IO goes here later). */
-static hid_t make_fapl(const char *path)
+static dem_io_parallel_hook parallel_hook;
+
+void dem_io_set_parallel_hook(const dem_io_parallel_hook *hook)
+{
+    if (hook) parallel_hook = *hook;
+    else memset(&parallel_hook, 0, sizeof parallel_hook);
+}
+
+/* Whether this is a parallel run's shared file: written by every rank at once. */
+static int shared_file(void) { return parallel_hook.use_mpio && dem_comm_size() > 1; }
+
+/* The transfer list of a dataset write: collective in a shared file. Closed with H5Pclose. */
+static hid_t make_dxpl(const char *path)
+{
+    hid_t dxpl = chk(H5Pcreate(H5P_DATASET_XFER), path, "cannot create a transfer list");
+    if (shared_file() && parallel_hook.collective(dxpl, parallel_hook.context) < 0)
+        h5_fail(path, "cannot make the transfers collective");
+    return dxpl;
+}
+
+/* This rank's rows of a dataset that holds every rank's: its offset and the total. */
+static void place(int64_t rows, int64_t *offset, int64_t *total)
+{
+    const int size = dem_comm_size(), rank = dem_comm_rank();
+    if (!shared_file()) {
+        *offset = 0;
+        *total = rows;
+        return;
+    }
+    int64_t *counts = dem_calloc((size_t)size, sizeof *counts);
+    counts[rank] = rows;
+    dem_reduce_int64s(counts, size, DEM_REDUCE_SUM);
+    *offset = *total = 0;
+    for (int r = 0; r < size; r++) {
+        if (r < rank) *offset += counts[r];
+        *total += counts[r];
+    }
+    free(counts);
+}
+
+/* The one place where the file access property list is made: MPI-IO for a parallel run's
+ * writer (shared), the process's own file otherwise (a reader: every rank reads alone). */
+static hid_t make_fapl(const char *path, int shared)
 {
     hid_t fapl = chk(H5Pcreate(H5P_FILE_ACCESS), path, "cannot create file access list");
+    if (shared && parallel_hook.use_mpio(fapl, parallel_hook.context) < 0) h5_fail(path, "cannot select MPI-IO");
 #if H5_VERSION_GE(1, 10, 7)
     /* Keep file locking, but do not fail on file systems without lock support. */
     chk(H5Pset_file_locking(fapl, 1, 1), path, "cannot set file locking");
@@ -304,6 +348,7 @@ static void xdmf_attribute(FILE *f, const dem_particle_writer *w, const char *gr
  * Snapshots with no particles are left out (zero-sized data items upset readers). */
 static void write_xdmf(const dem_particle_writer *w)
 {
+    if (shared_file() && dem_comm_rank() != 0) return;   /* one index, by rank 0 */
     char *tmp = str_cat(w->xdmf_path, ".tmp");
     FILE *f = fopen(tmp, "w");
     if (!f) dem_fatal("cannot write '%s': %s", tmp, strerror(errno));
@@ -342,7 +387,7 @@ static void write_xdmf(const dem_particle_writer *w)
 
 static hid_t create_file(const char *path)
 {
-    hid_t fapl = make_fapl(path);
+    hid_t fapl = make_fapl(path, shared_file());
     hid_t file = chk(H5Fcreate(path, H5F_ACC_TRUNC, H5P_DEFAULT, fapl), path,
                      "cannot create file");
     H5Pclose(fapl);
@@ -361,7 +406,7 @@ dem_particle_writer *dem_io_open_writer(const char *base, int append)
     FILE *probe = append ? fopen(w->h5_path, "rb") : NULL;
     if (probe) {
         fclose(probe);
-        hid_t fapl = make_fapl(w->h5_path);
+        hid_t fapl = make_fapl(w->h5_path, shared_file());
         w->file = chk(H5Fopen(w->h5_path, H5F_ACC_RDWR, fapl), w->h5_path,
                       "cannot open file to append snapshots");
         H5Pclose(fapl);
@@ -414,19 +459,41 @@ static hid_t memory_type_of(const dem_particle_field *pf)
     return pf->scalar == PF_DOUBLE ? H5T_NATIVE_DOUBLE : pf->scalar == PF_INT ? H5T_NATIVE_INT : H5T_NATIVE_INT64;
 }
 
-/* One field of n particles: n values, or n x components; its unit as the `units` attribute. */
-static void write_field(hid_t group, const dem_particle_field *pf, const dem_particles *p, int64_t n,
-                        const char *path)
+/* rows x cols of data (this rank's) into rows offset .. offset + rows - 1 of dset's total; every
+ * rank calls it in a shared file, also one without rows. */
+static void write_rows(hid_t dset, hid_t mem_type, const void *data, int64_t rows, int64_t cols, int64_t offset,
+                       int64_t total, int rank2, const char *path)
 {
-    hsize_t dims[2] = {(hsize_t)n, (hsize_t)pf->components};
-    hid_t space = chk(H5Screate_simple(pf->components > 1 ? 2 : 1, dims, NULL), path,
-                      "cannot create dataspace");
+    const hsize_t start[2] = {(hsize_t)offset, 0}, count[2] = {(hsize_t)rows, (hsize_t)cols};
+    const hsize_t whole[2] = {(hsize_t)total, (hsize_t)cols};
+    hid_t file_space = chk(H5Screate_simple(rank2, whole, NULL), path, "cannot create dataspace");
+    hid_t mem_space = chk(H5Screate_simple(rank2, count, NULL), path, "cannot create dataspace");
+    if (rows > 0 && cols > 0) {
+        chk(H5Sselect_hyperslab(file_space, H5S_SELECT_SET, start, NULL, count, NULL), path, "cannot select rows");
+    } else {
+        chk(H5Sselect_none(file_space), path, "cannot select rows");
+        chk(H5Sselect_none(mem_space), path, "cannot select rows");
+    }
+    hid_t dxpl = make_dxpl(path);
+    if (total > 0 && cols > 0)   /* every rank knows the total: all call, or none */
+        chk(H5Dwrite(dset, mem_type, mem_space, file_space, dxpl, data), path, "cannot write dataset");
+    H5Pclose(dxpl);
+    H5Sclose(mem_space);
+    H5Sclose(file_space);
+}
+
+/* One field of the n particles: n values, or n x components; its unit as the `units` attribute.
+ * In a shared file the dataset holds every rank's, this rank's at `offset` of `total`. */
+static void write_field(hid_t group, const dem_particle_field *pf, const dem_particles *p, int64_t n, int64_t offset,
+                        int64_t total, const char *path)
+{
+    const int rank2 = pf->components > 1 ? 2 : 1;
+    hsize_t dims[2] = {(hsize_t)total, (hsize_t)pf->components};
+    hid_t space = chk(H5Screate_simple(rank2, dims, NULL), path, "cannot create dataspace");
     hid_t dset = chk(H5Dcreate2(group, pf->dataset, file_type_of(pf), space, H5P_DEFAULT, H5P_DEFAULT,
                                 H5P_DEFAULT),
                      path, "cannot create dataset");
-    if (n > 0)
-        chk(H5Dwrite(dset, memory_type_of(pf), H5S_ALL, H5S_ALL, H5P_DEFAULT, particle_field_data(p, pf)),
-            path, "cannot write dataset");
+    write_rows(dset, memory_type_of(pf), particle_field_data(p, pf), n, pf->components, offset, total, rank2, path);
     write_string_attr(dset, "units", pf->unit, path);
     H5Dclose(dset);
     H5Sclose(space);
@@ -455,15 +522,20 @@ void dem_contact_state_free(dem_contact_state *cs)
 }
 
 /* A 2-D dataset of doubles or int64 with `cols` columns, compressed (deflate, level 1): much of
- * a contact's history is zeros. */
+ * a contact's history is zeros. `distributed`: each rank holds some of the rows (the contacts);
+ * otherwise every rank holds them all alike and rank 0 writes them. A shared file's datasets are
+ * not compressed (a filter would make every write collective per chunk). */
 static void write_matrix(hid_t group, const char *name, hid_t file_type, hid_t mem_type,
-                         const void *data, int64_t rows, int64_t cols, const char *path)
+                         const void *data, int64_t rows, int64_t cols, int distributed, const char *path)
 {
-    hsize_t dims[2] = {(hsize_t)rows, (hsize_t)cols};
+    int64_t offset = 0, total = rows;
+    if (distributed) place(rows, &offset, &total);
+    else if (shared_file() && dem_comm_rank() != 0) rows = 0;
+    hsize_t dims[2] = {(hsize_t)total, (hsize_t)cols};
     hid_t space = chk(H5Screate_simple(2, dims, NULL), path, "cannot create dataspace");
     hid_t dcpl = chk(H5Pcreate(H5P_DATASET_CREATE), path, "cannot create a dataset property list");
-    if (rows > 0 && cols > 0 && H5Zfilter_avail(H5Z_FILTER_DEFLATE) > 0) {
-        hsize_t chunk[2] = {(hsize_t)(rows < 65536 ? rows : 65536), (hsize_t)cols};
+    if (!shared_file() && total > 0 && cols > 0 && H5Zfilter_avail(H5Z_FILTER_DEFLATE) > 0) {
+        hsize_t chunk[2] = {(hsize_t)(total < 65536 ? total : 65536), (hsize_t)cols};
         chk(H5Pset_chunk(dcpl, 2, chunk), path, "cannot set the chunk size");
         chk(H5Pset_shuffle(dcpl), path, "cannot set the shuffle filter");
         chk(H5Pset_deflate(dcpl, 1), path, "cannot set the deflate filter");
@@ -471,8 +543,7 @@ static void write_matrix(hid_t group, const char *name, hid_t file_type, hid_t m
     hid_t dset = chk(H5Dcreate2(group, name, file_type, space, H5P_DEFAULT, dcpl, H5P_DEFAULT),
                      path, "cannot create dataset");
     H5Pclose(dcpl);
-    if (rows > 0 && cols > 0)
-        chk(H5Dwrite(dset, mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), path, "cannot write dataset");
+    write_rows(dset, mem_type, data, rows, cols, offset, total, 2, path);
     H5Dclose(dset);
     H5Sclose(space);
 }
@@ -483,8 +554,8 @@ static void write_contacts(hid_t g, const dem_contact_state *cs, const char *pat
                   "cannot create contacts group");
     write_scalar_attr(c, "history_size", H5T_STD_I32LE, H5T_NATIVE_INT, &cs->history_size, path);
     write_scalar_attr(c, "nwalls", H5T_STD_I32LE, H5T_NATIVE_INT, &cs->nwalls, path);
-    write_matrix(c, "keys", H5T_STD_I64LE, H5T_NATIVE_INT64, cs->keys, cs->count, 2, path);
-    write_matrix(c, "history", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, cs->history, cs->count, cs->history_size, path);
+    write_matrix(c, "keys", H5T_STD_I64LE, H5T_NATIVE_INT64, cs->keys, cs->count, 2, 1, path);
+    write_matrix(c, "history", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, cs->history, cs->count, cs->history_size, 1, path);
     H5Gclose(c);
 }
 
@@ -502,11 +573,11 @@ static void write_contacts(hid_t g, const dem_contact_state *cs, const char *pat
 static void write_bodies(hid_t g, const dem_body_state *b, const char *path)
 {
     hid_t c = chk(H5Gcreate2(g, "bodies", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), path, "cannot create bodies group");
-    write_matrix(c, "id", H5T_STD_I64LE, H5T_NATIVE_INT64, b->id, b->count, 1, path);
-    write_matrix(c, "template", H5T_STD_I64LE, H5T_NATIVE_INT64, b->template_of, b->count, 1, path);
+    write_matrix(c, "id", H5T_STD_I64LE, H5T_NATIVE_INT64, b->id, b->count, 1, 0, path);
+    write_matrix(c, "template", H5T_STD_I64LE, H5T_NATIVE_INT64, b->template_of, b->count, 1, 0, path);
 #define WRITE_BODY_COLUMN(name, units, cols, data)                                                  \
     {                                                                                               \
-        write_matrix(c, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, data, b->count, cols, path);       \
+        write_matrix(c, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, data, b->count, cols, 0, path);    \
         hid_t d = chk(H5Dopen2(c, name, H5P_DEFAULT), path, "cannot open dataset");                 \
         write_string_attr(d, "units", units, path);                                                 \
         H5Dclose(d);                                                                                \
@@ -519,11 +590,11 @@ static void write_bodies(hid_t g, const dem_body_state *b, const char *path)
 static void write_lifecycle(hid_t g, const dem_lifecycle_state *l, const char *path)
 {
     hid_t c = chk(H5Gcreate2(g, "lifecycle", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), path, "cannot create lifecycle group");
-    write_matrix(c, "balance", H5T_STD_I64LE, H5T_NATIVE_INT64, l->balance, 1, 6, path);
-    write_matrix(c, "outlets", H5T_STD_I64LE, H5T_NATIVE_INT64, l->outlets, l->noutlets, 3, path);
-    write_matrix(c, "streams", H5T_STD_I64LE, H5T_NATIVE_INT64, l->streams, l->nstreams, LIFECYCLE_STREAM_INTS, path);
+    write_matrix(c, "balance", H5T_STD_I64LE, H5T_NATIVE_INT64, l->balance, 1, 6, 0, path);
+    write_matrix(c, "outlets", H5T_STD_I64LE, H5T_NATIVE_INT64, l->outlets, l->noutlets, 3, 0, path);
+    write_matrix(c, "streams", H5T_STD_I64LE, H5T_NATIVE_INT64, l->streams, l->nstreams, LIFECYCLE_STREAM_INTS, 0, path);
     write_matrix(c, "stream_reals", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, l->stream_reals, l->nstreams,
-                 LIFECYCLE_STREAM_REALS, path);
+                 LIFECYCLE_STREAM_REALS, 0, path);
     write_string_attr(c, "outlet_names", l->outlet_names ? l->outlet_names : "", path);
     write_string_attr(c, "stream_names", l->stream_names ? l->stream_names : "", path);
     write_string_attr(c, "mass_units", "2^-64 kg, as two int64 (high, low)", path);
@@ -547,10 +618,12 @@ void dem_io_write_snapshot_contacts(dem_particle_writer *w, const dem_particles 
     hid_t g = chk(H5Gcreate2(snaps, name, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), path,
                   "cannot create snapshot group");
 
-    const int64_t n = p->n;
+    int64_t offset, n;   /* this rank's first row; the particles of all ranks */
+    place(p->n, &offset, &n);
     for (int k = 0; k < PARTICLE_FIELD_COUNT; k++)
-        if (dem_particle_fields[k].flags & (PF_WRITE | PF_RESTART)) write_field(g, &dem_particle_fields[k], p, n, path);
-    if (cs && cs->history_size > 0) write_contacts(g, cs, path);
+        if (dem_particle_fields[k].flags & (PF_WRITE | PF_RESTART))
+            write_field(g, &dem_particle_fields[k], p, p->n, offset, n, path);
+    if (cs && cs->history_size > 0) write_contacts(g, cs, path);   /* the models' size: alike on every rank */
     if (cs && cs->bodies.count > 0) write_bodies(g, &cs->bodies, path);
     if (cs && cs->lifecycle.present) write_lifecycle(g, &cs->lifecycle, path);
     if (cs && cs->coarse_graining > 1.0)   /* the diameters written are the parcels' */
@@ -745,7 +818,7 @@ int dem_io_read_snapshot_at(const char *base, double at_time, double tolerance, 
 {
     h5_quiet();
     char *path = str_cat(base, ".h5");
-    hid_t fapl = make_fapl(path);
+    hid_t fapl = make_fapl(path, 0);
     hid_t file = chk(H5Fopen(path, H5F_ACC_RDONLY, fapl), path, "cannot open file for reading");
     H5Pclose(fapl);
 
@@ -804,7 +877,7 @@ int dem_io_drop_snapshots_after(const char *base, double after_time)
 {
     h5_quiet();
     char *path = str_cat(base, ".h5");
-    hid_t fapl = make_fapl(path);
+    hid_t fapl = make_fapl(path, 0);
     hid_t file = chk(H5Fopen(path, H5F_ACC_RDWR, fapl), path, "cannot open file to drop snapshots");
     H5Pclose(fapl);
     scan_state s;

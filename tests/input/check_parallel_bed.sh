@@ -1,0 +1,70 @@
+#!/bin/bash
+# The DEM bed on 1, 2 and 4 ranks (issue 23), and restarts across rank counts: 2,000 glass spheres
+# of 1.5 mm poured into a 20 x 20 x 40 mm box (Hertz, tangential history) settle for 0.25 s.
+#  1. `mpirun -np 2` and `-np 4` (oversubscribed) of the straight run: the same 2,000 ids, and the
+#     settled bed's height (twice the mean centre height) and solid fraction (the spheres' volume
+#     over the box's cross-section times that height) within 0.5 % of the serial run's;
+#  2. a run made on 4 ranks to 0.15 s and restarted on 1 rank to 0.25 s, and one made on 1 rank and
+#     restarted on 2: the same ids, height and solid fraction within 0.5 % of the straight serial run;
+#  3. every snapshot of a parallel run holds every particle once (one file, written by all ranks).
+# The largest difference in position from the serial run is printed (the runs differ only in the
+# order of force sums, which a pour amplifies).
+# Usage: check_parallel_bed.sh <demRun> <mpiexec>
+demRun=$1
+mpiexec=${2:-mpirun}
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1   # ../shared/docs: mpirun as root
+here=$(cd "$(dirname "$0")" && pwd)
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+make_case() {   # dir endTime
+    mkdir -p "$1/constant"
+    sed -e "s/^endTime        0.02;/endTime        $2;/" -e "s/^writeInterval  0;/writeInterval  0.05;/" \
+        -e "s/number   200;/number   2000;/" -e "s/value 2e-3;/value 1.5e-3;/" \
+        "$here/base.demProperties" > "$1/constant/demProperties"
+}
+run() {   # ranks dir [args]
+    local np=$1; shift
+    if [ "$np" = 1 ]; then "$demRun" "$@" > "$work/log" 2>&1 || { cat "$work/log"; exit 1; }
+    else "$mpiexec" -np "$np" --oversubscribe "$demRun" "$@" > "$work/log" 2>&1 || { cat "$work/log"; exit 1; }
+    fi
+    grep -E "^(done|exchange|decomposition)" "$work/log" | sed "s|^|  $np rank(s), $(basename "$1"): |"
+}
+for np in 1 2 4; do make_case "$work/straight$np" 0.25; run $np "$work/straight$np"; done
+make_case "$work/from4" 0.15; run 4 "$work/from4"
+sed -i 's/^endTime        0.15;/endTime        0.25;/' "$work/from4/constant/demProperties"; run 1 "$work/from4" -restart
+make_case "$work/from1" 0.15; run 1 "$work/from1"
+sed -i 's/^endTime        0.15;/endTime        0.25;/' "$work/from1/constant/demProperties"; run 2 "$work/from1" -restart
+
+/usr/bin/python3 - "$work" <<'PY'
+import sys, h5py, numpy as np
+work = sys.argv[1]
+N, R, AREA = 2000, 0.75e-3, 0.02 * 0.02
+failed = 0
+def check(what, ok):
+    global failed
+    print(f"CHECK {what:<100} {'PASS' if ok else 'FAIL'}")
+    failed += not ok
+def last(case):
+    with h5py.File(f"{work}/{case}/particles.h5", "r") as f:
+        snaps = f["snapshots"]
+        every_once = all(np.array_equal(np.sort(snaps[k]["id"][:]), np.arange(N)) for k in snaps)
+        s = snaps[sorted(snaps)[-1]]
+        ids, x = s["id"][:], s["position"][:]
+        o = np.argsort(ids)
+        return ids[o], x[o], float(s.attrs["time"]), every_once
+ids1, x1, t1, _ = last("straight1")
+h1 = 2 * x1[:, 2].mean()
+phi1 = N * 4 / 3 * np.pi * R**3 / (AREA * h1)
+print(f"serial: t = {t1:g} s, bed height {h1 * 1e3:.4f} mm, solid fraction {phi1:.4f}")
+for case, what in [("straight2", "2 ranks"), ("straight4", "4 ranks"), ("from4", "4 ranks to 0.15 s, restarted on 1"),
+                   ("from1", "1 rank to 0.15 s, restarted on 2")]:
+    ids, x, t, every_once = last(case)
+    h = 2 * x[:, 2].mean()
+    phi = N * 4 / 3 * np.pi * R**3 / (AREA * h)
+    dx = np.abs(x - x1).max() if np.array_equal(ids, ids1) else float("inf")
+    check(f"{what}: t = {t:g} s, ids 0..{N - 1} each once in every snapshot", t == t1 and np.array_equal(ids, ids1) and every_once)
+    check(f"{what}: bed height {h * 1e3:.4f} mm, {100 * (h / h1 - 1):+.3f} % of serial (0.5 % allowed)", abs(h / h1 - 1) <= 0.005)
+    check(f"{what}: solid fraction {phi:.4f}, {100 * (phi / phi1 - 1):+.3f} % of serial (0.5 % allowed)", abs(phi / phi1 - 1) <= 0.005)
+    print(f"  {what}: largest difference in position from the serial run {dx:.3g} m")
+sys.exit(1 if failed else 0)
+PY
