@@ -100,7 +100,7 @@ void dem_decompose_rcb(dem_decomposition *d, int nparts, const double lo[3], con
     int *at = dem_calloc((size_t)(n ? n : 1), sizeof *at);   /* the level's box of each particle, -1: placed */
     int *dim = dem_malloc((size_t)nparts * sizeof *dim);
     double *total = dem_malloc((size_t)nparts * sizeof *total), *target = dem_malloc((size_t)nparts * sizeof *target);
-    double *cut = dem_malloc((size_t)nparts * sizeof *cut);
+    double *cut = dem_malloc((size_t)nparts * sizeof *cut), *extent = dem_malloc((size_t)6 * nparts * sizeof *extent);
     int *to = dem_malloc((size_t)2 * nparts * sizeof *to);
     int m = 1;
     level[0] = (pending){.node = 0, .p0 = 0, .k = nparts};
@@ -112,11 +112,28 @@ void dem_decompose_rcb(dem_decomposition *d, int nparts, const double lo[3], con
         for (int i = 0; i < n; i++)
             if (at[i] >= 0) total[at[i]] += weight_of(weight, i);
         dem_reduce_doubles(total, m, DEM_REDUCE_SUM);
+        /* the extent of each box's particles (as -min, max: one reduction, exact at any rank count) */
+        for (int j = 0; j < 6 * m; j++) extent[j] = -INFINITY;
+        for (int i = 0; i < n; i++) {
+            if (at[i] < 0) continue;
+            const pending *b = &level[at[i]];
+            for (int e = 0; e < 3; e++) {
+                const double c = fmin(fmax(x[i][e], b->lo[e]), b->hi[e]);
+                extent[6 * at[i] + e] = fmax(extent[6 * at[i] + e], -c);
+                extent[6 * at[i] + 3 + e] = fmax(extent[6 * at[i] + 3 + e], c);
+            }
+        }
+        dem_reduce_doubles(extent, 6 * m, DEM_REDUCE_MAX);
         for (int j = 0; j < m; j++) {
             const pending *b = &level[j];
-            dim[j] = 0;   /* the longest side (the first of equal ones): compact boxes, short borders */
+            /* across the longest side of what the box holds (of the box itself when it is empty): a
+             * settled bed in a tall box is cut upright, where its border with the next box is short */
+            double side[3];
+            for (int e = 0; e < 3; e++)
+                side[e] = isfinite(extent[6 * j + e]) ? extent[6 * j + 3 + e] + extent[6 * j + e] : b->hi[e] - b->lo[e];
+            dim[j] = 0;   /* the first of equal ones */
             for (int e = 1; e < 3; e++)
-                if (b->hi[e] - b->lo[e] > b->hi[dim[j]] - b->lo[dim[j]]) dim[j] = e;
+                if (side[e] > side[dim[j]]) dim[j] = e;
             target[j] = total[j] * (double)(b->k / 2) / b->k;
         }
         find_cuts(m, level, dim, target, total, n, x, weight, at, cut);
@@ -159,6 +176,7 @@ void dem_decompose_rcb(dem_decomposition *d, int nparts, const double lo[3], con
     free(total);
     free(target);
     free(cut);
+    free(extent);
     free(to);
 }
 

@@ -2,8 +2,8 @@
  *
  * The domain is split into nparts boxes of equal weight (particle count, or a measured cost per
  * particle). The tree is cut level by level: every box of a level that still holds k > 1 parts is
- * cut across its longest side at the plane that leaves floor(k/2)/k of its weight below; the two
- * halves hold floor(k/2) and the rest of its parts. A cut is found by histograms of the weight
+ * cut across the longest side of the particles it holds (of the box, when empty) at the plane that
+ * leaves floor(k/2)/k of its weight below; the two halves hold floor(k/2) and the rest of its parts. A cut is found by histograms of the weight
  * along that side, each narrowed to the bin where the target falls (BINS bins, ROUNDS rounds: the
  * plane is placed to 1/BINS^ROUNDS of the side). The histograms are summed through reduce.h, so a
  * parallel run gives every rank the same tree from its own particles, and with counts as the

@@ -14,7 +14,7 @@
     X(LIST, "neighbour and wall lists (moved check, rebuilds)")                                 \
     X(LIFECYCLE, "insertion and removal (streams, outlets)")                                    \
     X(LIST_LIFECYCLE, "list rebuilds after insertion/removal")                                  \
-    X(GHOSTS, "ghosts: images, halo (update, force fold)")                                        \
+    X(GHOSTS, "ghosts: images, halo (update, force fold)")                                      \
     X(PAIRS, "particle-particle contacts (every model)")                                       \
     X(WALLS, "wall contacts")                                                                   \
     X(BODIES, "multisphere bodies")                                                             \

@@ -63,21 +63,36 @@ static void check_step_motion(const dem_system *s)
     }
 }
 
-/* A parallel run's boxes cut again where the particles are now, when the fullest rank holds more
- * than 10 % above the mean (a bed that settles or bubbles moves its load); looked at every 10th
- * list build. Migration then takes each particle to its new owner. */
+/* A parallel run's boxes cut again where the load is now, when the busiest rank has more than 5 %
+ * above the mean (a bed that settles or bubbles moves its load); looked at every 10th list build.
+ * The load is the measured compute time since the last look (the stages without messages:
+ * integration, pair contacts, walls), shared out on each rank over its particles: a particle's
+ * cost is the rank's integration and wall time per particle plus its pair time per listed pair
+ * times the pairs it holds. So the cut follows where the time goes (a dense bed's touching pairs
+ * cost more than a dilute region's listed ones), not only the counts. Migration then takes each
+ * particle to its new owner. */
 static void rebalance(dem_system *s)
 {
     if (s->nlist.builds % 10 != 0) return;
-    const int nranks = dem_comm_size();
+    const int nranks = dem_comm_size(), n = s->p.n;
+    const dem_neighbour_list *nl = &s->nlist;
+    double *secs = s->stage_seconds, *last = s->stage_seconds_at_balance;
+    const double t_particles = secs[DEM_STAGE_INTEGRATE] - last[DEM_STAGE_INTEGRATE] + secs[DEM_STAGE_WALLS] - last[DEM_STAGE_WALLS];
+    const double t_pairs = secs[DEM_STAGE_PAIRS] - last[DEM_STAGE_PAIRS];
+    memcpy(last, secs, sizeof s->stage_seconds_at_balance);
     dem_neighbour_wrap(s);
-    double *held = dem_malloc((size_t)nranks * sizeof *held);
-    const double imbalance = dem_decomposition_imbalance(&s->decomp, s->p.n, (const dem_vec3 *)s->p.x, NULL, held);
+    double *cost = dem_malloc((size_t)(n ? n : 1) * sizeof *cost), *held = dem_malloc((size_t)nranks * sizeof *held);
+    const double per_particle = n ? t_particles / n : 0.0, per_pair = nl->npairs ? t_pairs / (double)nl->npairs : 0.0;
+    for (int i = 0; i < n; i++)   /* the lists are those of the last build: the same particles */
+        cost[i] = per_particle + per_pair * (i < nl->rows && nl->id_at_build[i] == s->p.id[i] ? nl->start[i + 1] - nl->start[i] : 0);
+    const double imbalance = dem_decomposition_imbalance(&s->decomp, n, (const dem_vec3 *)s->p.x, cost, held);
+    if (imbalance > 1.05) {
+        dem_decomposition_free(&s->decomp);
+        dem_decompose_rcb(&s->decomp, nranks, s->domain_min, s->domain_max, n, (const dem_vec3 *)s->p.x, cost);
+        s->rebalances++;
+    }
+    free(cost);
     free(held);
-    if (imbalance <= 1.1) return;
-    dem_decomposition_free(&s->decomp);
-    dem_decompose_rcb(&s->decomp, nranks, s->domain_min, s->domain_max, s->p.n, (const dem_vec3 *)s->p.x, NULL);
-    s->rebalances++;
 }
 
 /* The neighbour and wall lists made again, each contact's history carried over by its ids. */

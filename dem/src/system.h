@@ -40,6 +40,7 @@ typedef struct dem_system {
     dem_neighbour_list nlist;
     dem_decomposition decomp;             /* each rank's box (decompose.h): one part, the domain, serially */
     long rebalances;                      /* new decompositions since set-up (a parallel run) */
+    double stage_seconds_at_balance[DEM_STAGE_COUNT];   /* stage_seconds when the load was last looked at */
     dem_ghost_list ghosts;                /* periodic images and other ranks' particles, after the particles (ghosts.h) */
     dem_contact_rows carried;             /* the contacts' history across a rebuild (contacts.h) */
 
