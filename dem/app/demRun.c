@@ -71,6 +71,11 @@ static void report_exchange(const dem_system *s, long steps, double all)
     printf("exchange on %d ranks: %.4g bytes sent per rank per step (mean; the most %.4g), against %.4g for an "
            "all-gather of every particle's position, velocity and spin (%.1f%% of it)\n",
            size, per_step, most, allgather, allgather > 0 ? 100.0 * per_step / allgather : 0.0);
+    const dem_ghost_list *g = &s->ghosts;
+    double halo[2] = {(double)(g->n - g->recv_count[dem_comm_rank()]), (double)s->p.n};   /* ghosts from others, own */
+    dem_reduce_doubles(halo, 2, DEM_REDUCE_SUM);
+    printf("halo at the end: %.4g ghosts from other ranks per rank (mean), %.3f of a rank's particles\n", halo[0] / size,
+           halo[1] > 0 ? halo[0] / halo[1] : 0.0);
 }
 
 static void usage(void)
