@@ -3,6 +3,7 @@
 
 #include <stdio.h>
 #include <stdlib.h>
+#include <unistd.h>
 
 #include "comm.h"
 #include <hdf5.h>
@@ -73,13 +74,16 @@ static void counts(const int64_t *send, int64_t *recv, void *context)
     MPI_Alltoall(send, 1, MPI_INT64_T, recv, 1, MPI_INT64_T, *(MPI_Comm *)context);
 }
 
-/* An error on one rank ends every rank: the message once, from the rank that met it (an error
- * every rank meets alike, in the input, is said by rank 0 alone; the others wait to be ended). */
+/* An error on one rank ends every rank: the message once, from the rank that met it. An error
+ * every rank meets alike (the input, read by all) is said by rank 0 alone: the others wait two
+ * seconds before they speak, and rank 0's abort has ended them by then; an error of one rank
+ * alone (a particle that blew up in its box) is said by that rank after the wait. */
 static void fatal_abort(const char *where, const char *message)
 {
     int rank = 0;
     MPI_Comm_rank(MPI_COMM_WORLD, &rank);
     fflush(stdout);
+    if (rank != 0) sleep(2);
     if (where) fprintf(stderr, "%s: error: %s\n", where, message);
     else fprintf(stderr, "error: %s\n", message);
     if (rank != 0) fprintf(stderr, "(on rank %d)\n", rank);

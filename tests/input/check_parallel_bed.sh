@@ -6,7 +6,9 @@
 #     over the box's cross-section times that height) within 0.5 % of the serial run's;
 #  2. a run made on 4 ranks to 0.15 s and restarted on 1 rank to 0.25 s, and one made on 1 rank and
 #     restarted on 2: the same ids, height and solid fraction within 0.5 % of the straight serial run;
-#  3. every snapshot of a parallel run holds every particle once (one file, written by all ranks).
+#  3. every snapshot of a parallel run holds every particle once (one file, written by all ranks);
+#  4. bad input on 2 ranks (every rank reads it) stops both, with one message naming file:line and
+#     key, and a non-zero exit status.
 # The largest difference in position from the serial run is printed (the runs differ only in the
 # order of force sums, which a pour amplifies).
 # Usage: check_parallel_bed.sh <demRun> <mpiexec>
@@ -29,6 +31,18 @@ run() {   # ranks dir [args]
     fi
     grep -E "^(done|exchange|decomposition)" "$work/log" | sed "s|^|  $np rank(s), $(basename "$1"): |"
 }
+make_case "$work/bad" 0.25
+sed -i 's/youngsModulus 5e6/youngsModulus -5e6/' "$work/bad/constant/demProperties"
+if "$mpiexec" -np 2 --oversubscribe "$demRun" "$work/bad" > "$work/bad.log" 2>&1; then
+    echo "CHECK bad input on 2 ranks stops the run                                                         FAIL"; exit 1
+fi
+nerr=$(grep -c "error:" "$work/bad.log")
+if [ "$nerr" = 1 ] && grep -q "demProperties:[0-9]*: error: key 'youngsModulus'" "$work/bad.log"; then
+    echo "CHECK bad input on 2 ranks: one message with file:line and key, exit status non-zero             PASS"
+else
+    echo "CHECK bad input on 2 ranks: one message with file:line and key ($nerr 'error:' lines)            FAIL"
+    cat "$work/bad.log"; exit 1
+fi
 for np in 1 2 4; do make_case "$work/straight$np" 0.25; run $np "$work/straight$np"; done
 make_case "$work/from4" 0.15; run 4 "$work/from4"
 sed -i 's/^endTime        0.15;/endTime        0.25;/' "$work/from4/constant/demProperties"; run 1 "$work/from4" -restart
