@@ -57,7 +57,8 @@ static int start_mpi(int *argc, char ***argv)
 }
 
 /* The bytes each rank sent per step (halo and migration), against what CFDEMcoupling's twoWayMPI
- * way would move: every particle's position, velocity and spin to every rank each step. */
+ * way would move: every particle's position, velocity and spin to every rank each step (`all`:
+ * the mean particle count over the steps). */
 static void report_exchange(const dem_system *s, long steps, double all)
 {
     const int size = dem_comm_size();
@@ -104,21 +105,23 @@ static double run_steps(dem_system *s, long nsteps, long write_every, dem_partic
 {
     const double start = wall_clock();
     double next_report = start + progress_interval, particle_steps = 0.0;
-    /* every rank's particles: a parallel run has no streams or outlets (set-up refuses them), so
-     * its count is that of the start; a serial one counts as it goes */
+    /* this rank's particle-steps, summed over the ranks at the end; the progress lines (rank 0's
+     * clock decides when, so no rank waits for them) give the count of every rank as it was at
+     * the start or the last snapshot, where the ranks meet anyway */
     const int parallel = dem_comm_size() > 1;
-    const double all_particles = sum_ranks(s->p.n);
+    double all_particles = sum_ranks(s->p.n);
     for (long k = 1; k <= nsteps; k++) {
         dem_system_step(s);
-        particle_steps += parallel ? all_particles : s->p.n;
+        particle_steps += s->p.n;
         if (write_every > 0 && s->step % write_every == 0) {
             write_snapshot(w, s);
             dem_system_relist(s);   /* as a restart from this snapshot will: the two runs stay equal */
+            all_particles = sum_ranks(s->p.n);
         }
         if (progress_interval > 0 && (k & 63) == 0) {
             const double now = wall_clock();
             if (now >= next_report) {
-                const double rate = particle_steps / (now - start);
+                const double rate = (parallel ? all_particles * k : particle_steps) / (now - start);
                 const double eta = (double)(nsteps - k) * (now - start) / (double)k;
                 printf("step %ld  t = %.6g s  %5.1f %%  %.0f particles  %.3g particle-steps/s  "
                        "ETA %.0f s\n", s->step, s->time, 100.0 * k / nsteps, parallel ? all_particles : s->p.n, rate, eta);
@@ -127,7 +130,7 @@ static double run_steps(dem_system *s, long nsteps, long write_every, dem_partic
             }
         }
     }
-    return particle_steps;
+    return sum_ranks(particle_steps);
 }
 
 int main(int argc, char **argv)
@@ -223,7 +226,7 @@ int main(int argc, char **argv)
         printf("kinetic energy: the %.0f prescribed particles (driven at their set velocity) left out\n", prescribed);
     printf("neighbour list: %.2f pairs per particle (skin %g m)\n", all > 0 ? sum_ranks((double)s.nlist.npairs) / all : 0.0,
            s.nlist.skin);
-    if (dem_comm_size() > 1) report_exchange(&s, total_steps, all);
+    if (dem_comm_size() > 1) report_exchange(&s, total_steps, total_steps > 0 ? particle_steps / total_steps : all);
     if (s.bodies.n)   /* each body's is in the snapshots */
         printf("multisphere: %d bodies, rotational kinetic energy %.6g J (seed 004 eq. 8, summed over the bodies)\n",
                s.bodies.n, dem_bodies_rotational_energy(&s));

@@ -4,7 +4,9 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "comm.h"
 #include "error.h"
+#include "reduce.h"
 #include "system.h"
 
 dem_tally dem_lifecycle_held(const dem_system *s)
@@ -54,6 +56,23 @@ void dem_lifecycle_apply(dem_system *s)
     if (s->nstreams) dem_streams_insert(s, s->step + 1);
 }
 
+/* A tally summed over the ranks, exactly: every rank's (count, mass) in its own slots of one
+ * reduction (a sum with one term per slot), added up here in 128 bits. In a parallel run each
+ * rank counts what it removed and inserted; the balance, the log and the snapshot are of them all. */
+static dem_tally over_ranks(dem_tally t)
+{
+    const int size = dem_comm_size(), rank = dem_comm_rank();
+    if (size == 1) return t;
+    int64_t *v = dem_calloc((size_t)3 * size, sizeof *v);
+    v[3 * rank] = t.count;
+    dem_quanta_split(t.mass, &v[3 * rank + 1], &v[3 * rank + 2]);
+    dem_reduce_int64s(v, 3 * size, DEM_REDUCE_SUM);
+    dem_tally sum = {0, 0};
+    for (int r = 0; r < size; r++) dem_tally_add(&sum, v[3 * r], dem_quanta_join(v[3 * r + 1], v[3 * r + 2]));
+    free(v);
+    return sum;
+}
+
 /* "n (m kg)" */
 static const char *tally_text(char *buf, size_t size, dem_tally t)
 {
@@ -75,12 +94,13 @@ static void rate_since(dem_tally now, dem_tally *logged, double *logged_time, do
 void dem_lifecycle_log(dem_system *s)
 {
     if (!s->noutlets && !s->nstreams) return;
-    const dem_tally held = dem_lifecycle_held(s);
-    const int64_t dn = s->inserted.count - s->removed.count - held.count;
-    const dem_mass_quanta dm = s->inserted.mass - s->removed.mass - held.mass;
+    const dem_tally held = over_ranks(dem_lifecycle_held(s)), inserted = over_ranks(s->inserted),
+                    removed = over_ranks(s->removed);
+    const int64_t dn = inserted.count - removed.count - held.count;
+    const dem_mass_quanta dm = inserted.mass - removed.mass - held.mass;
     char a[96], b[96], c[96];
     dem_info("mass balance at t = %.9g s: inserted %s - removed %s - held %s = %" PRId64 " particles, %.3g kg%s",
-             s->time, tally_text(a, sizeof a, s->inserted), tally_text(b, sizeof b, s->removed),
+             s->time, tally_text(a, sizeof a, inserted), tally_text(b, sizeof b, removed),
              tally_text(c, sizeof c, held), dn, dem_quanta_to_kg(dm), dn == 0 && dm == 0 ? " (exact)" : " MISMATCH");
     if (dn != 0 || dm != 0)
         dem_fatal("the particle mass balance does not close at t = %g s: %" PRId64 " particles, %g kg unaccounted "
@@ -100,9 +120,10 @@ void dem_lifecycle_log(dem_system *s)
     for (int k = 0; k < s->noutlets; k++) {
         dem_outlet *o = &s->outlets[k];
         double nr, mr;
-        rate_since(o->removed, &o->logged, &o->logged_time, s->time, &nr, &mr);
+        const dem_tally gone = over_ranks(o->removed);   /* logged: the sum over the ranks too */
+        rate_since(gone, &o->logged, &o->logged_time, s->time, &nr, &mr);
         dem_info("outlet '%s': removed %s, %.6g particles/s, %.6g kg/s since the last write", o->name,
-                 tally_text(a, sizeof a, o->removed), nr, mr);
+                 tally_text(a, sizeof a, gone), nr, mr);
     }
 }
 
@@ -153,14 +174,14 @@ void dem_lifecycle_to_state(const dem_system *s, dem_lifecycle_state *l)
     memset(l, 0, sizeof *l);
     if (!s->noutlets && !s->nstreams) return;
     l->present = 1;
-    put_tally(&l->balance[0], s->inserted);
-    put_tally(&l->balance[3], s->removed);
+    put_tally(&l->balance[0], over_ranks(s->inserted));   /* the whole run's: every rank writes the same */
+    put_tally(&l->balance[3], over_ranks(s->removed));
     l->noutlets = s->noutlets;
     l->nstreams = s->nstreams;
     l->outlets = dem_malloc((size_t)(3 * s->noutlets + 1) * sizeof(int64_t));
     l->streams = dem_malloc((size_t)(LIFECYCLE_STREAM_INTS * s->nstreams + 1) * sizeof(int64_t));
     l->stream_reals = dem_malloc((size_t)(LIFECYCLE_STREAM_REALS * s->nstreams + 1) * sizeof(double));
-    for (int k = 0; k < s->noutlets; k++) put_tally(&l->outlets[3 * k], s->outlets[k].removed);
+    for (int k = 0; k < s->noutlets; k++) put_tally(&l->outlets[3 * k], over_ranks(s->outlets[k].removed));
     for (int k = 0; k < s->nstreams; k++) {
         const dem_stream *st = &s->streams[k];
         int64_t *o = &l->streams[LIFECYCLE_STREAM_INTS * k];
@@ -194,6 +215,13 @@ void dem_lifecycle_from_state(dem_system *s, const dem_lifecycle_state *l, const
         else if (l && l->present) dem_info("%s: outlet '%s' is new: its counts start from here", where, o->name);
         o->logged = o->removed;
         o->logged_time = s->time;
+    }
+    /* every rank has read the whole run's counts; in a parallel run rank 0 carries them on and the
+     * others count from zero, so that the sums over the ranks stay the run's (the logged values are
+     * sums already) */
+    if (dem_comm_rank() != 0) {
+        s->inserted = s->removed = (dem_tally){0, 0};
+        for (int k = 0; k < s->noutlets; k++) s->outlets[k].removed = (dem_tally){0, 0};
     }
     for (int k = 0; k < s->nstreams; k++) {
         dem_stream *st = &s->streams[k];

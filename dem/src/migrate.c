@@ -27,6 +27,29 @@ void dem_migrate_keep_owned(dem_system *s)
     free(dest);
 }
 
+/* The present index of each row of the contacts gathered at the last build (-1: the particle is
+ * gone). Mostly the row's own index; an outlet's removal in this rebuild moved a few particles
+ * (the last into a removed one's place), and those are found by id. */
+static int *rows_now(const dem_particles *p, const dem_contact_rows *cr)
+{
+    int *now = dem_malloc((size_t)(cr->rows ? cr->rows : 1) * sizeof *now);
+    int moved = 0;
+    for (int r = 0; r < cr->rows; r++) {
+        now[r] = r < p->n && cr->row_id[r] == p->id[r] ? r : -1;
+        moved |= now[r] < 0;
+    }
+    if (!moved) return now;
+    dem_contact_store where;   /* id -> index, through the store's hash: history [index] */
+    dem_contact_store_init(&where, 1, 0);
+    for (int i = 0; i < p->n; i++) dem_contact_store_put(&where, p->id[i], 0, &(double){(double)i});
+    for (int r = 0; r < cr->rows; r++) {
+        double i;
+        if (now[r] < 0 && dem_contact_store_take(&where, cr->row_id[r], 0, &i)) now[r] = (int)i;
+    }
+    dem_contact_store_free(&where);
+    return now;
+}
+
 static void put_i64(unsigned char **at, int64_t v)
 {
     memcpy(*at, &v, sizeof v);
@@ -55,14 +78,14 @@ void dem_migrate(dem_system *s)
         dest[i] = dem_decomposition_owner(&s->decomp, p->x[i]);
         if (dest[i] != me) np_to[dest[i]]++;
     }
-    /* the contacts by row were gathered at the particles' present indices (no particle was added,
-     * removed or moved since the last build: streams and outlets are serial for now) */
-    const int rows = cr->rows < n ? cr->rows : n;
-    for (int i = 0; i < rows; i++)
-        if (dest[i] != me && cr->row_id[i] == p->id[i]) nc_to[dest[i]] += cr->start[i + 1] - cr->start[i];
-    for (long c = cr->start[cr->rows]; c < cr->count; c++) {   /* the wall contacts: partner is the index */
-        const int i = (int)cr->partner_id[c];
-        if (i < rows && dest[i] != me && cr->row_id[i] == p->id[i]) nc_to[dest[i]]++;
+    /* the contacts by row, gathered at the last build's indices: the pairs of row r and the wall
+     * contacts whose partner is r go where the particle of row r goes */
+    int *now = rows_now(p, cr);
+    for (int r = 0; r < cr->rows; r++)
+        if (now[r] >= 0 && dest[now[r]] != me) nc_to[dest[now[r]]] += cr->start[r + 1] - cr->start[r];
+    for (long c = cr->start[cr->rows]; c < cr->count; c++) {   /* the wall contacts: partner is the row */
+        const int i = now[cr->partner_id[c]];
+        if (i >= 0 && dest[i] != me) nc_to[dest[i]]++;
     }
     const size_t ps = dem_particles_pack_size(), cs = 2 * sizeof(int64_t) + (size_t)hs * sizeof(double);
     size_t *send_bytes = dem_malloc((size_t)nr * sizeof(size_t)), *send_offset = dem_malloc((size_t)nr * sizeof(size_t));
@@ -91,12 +114,13 @@ void dem_migrate(dem_system *s)
         part_at[r] = at;
         contact_at[r] = at + (size_t)np_to[r] * ps;
     }
-    for (int i = 0; i < n; i++) {
+    for (int i = 0; i < n; i++)
+        if (dest[i] != me) part_at[dest[i]] += dem_particles_pack(p, i, part_at[dest[i]]);
+    for (int row = 0; row < cr->rows; row++) {
+        const int i = now[row];
+        if (i < 0 || dest[i] == me) continue;
         const int r = dest[i];
-        if (r == me) continue;
-        part_at[r] += dem_particles_pack(p, i, part_at[r]);
-        if (i >= rows || cr->row_id[i] != p->id[i]) continue;
-        for (int c = cr->start[i]; c < cr->start[i + 1]; c++) {
+        for (int c = cr->start[row]; c < cr->start[row + 1]; c++) {
             put_i64(&contact_at[r], p->id[i]);
             put_i64(&contact_at[r], cr->partner_id[c]);
             memcpy(contact_at[r], cr->history + (size_t)c * hs, (size_t)hs * sizeof(double));
@@ -106,8 +130,8 @@ void dem_migrate(dem_system *s)
     }
     for (int w = 0; w < s->nwalls; w++)
         for (int c = cr->wall_start[w]; c < cr->wall_start[w + 1]; c++) {
-            const int i = (int)cr->partner_id[c];
-            if (i >= rows || dest[i] == me || cr->row_id[i] != p->id[i]) continue;
+            const int i = now[cr->partner_id[c]];
+            if (i < 0 || dest[i] == me) continue;
             put_i64(&contact_at[dest[i]], contact_wall_key(w));
             put_i64(&contact_at[dest[i]], p->id[i]);
             memcpy(contact_at[dest[i]], cr->history + (size_t)c * hs, (size_t)hs * sizeof(double));
@@ -133,6 +157,7 @@ void dem_migrate(dem_system *s)
         }
     }
     free(h);
+    free(now);
     free(send);
     free(recv);
     free(part_at);

@@ -155,8 +155,7 @@ static void decompose(dem_system *s)
 {
     const int nranks = dem_comm_size();
     if (nranks > 1) {
-        const char *what = s->bodies.n ? "multisphere bodies" : s->nstreams ? "insertion streams (a stream's inserts)"
-                           : s->noutlets ? "outlets" : NULL;
+        const char *what = s->bodies.n ? "multisphere bodies" : s->nstreams ? "insertion streams (method stream)" : NULL;
         if (what)
             dem_fatal("%s are not supported in a parallel run yet (%d ranks): run this case on one rank", what, nranks);
     }
@@ -328,7 +327,8 @@ void dem_system_step(dem_system *s)
         dem_stage_lap(secs, DEM_STAGE_BODIES, &t);
     }
     const int moved_far = moved_far_since_build(s);
-    const int lifecycle = (s->noutlets || s->nstreams) && dem_lifecycle_due(s);   /* particles out or due in */
+    /* particles out or due in (on any rank: the rebuild is made by all) */
+    const int lifecycle = (s->noutlets || s->nstreams) && dem_reduce_any(dem_lifecycle_due(s));
     const int walls_moved = dem_walls_move(s, s->time + s->dt);                   /* walls at the step's end */
     dem_stage_lap(secs, DEM_STAGE_LIST, &t);
     if (walls_moved || moved_far || lifecycle) rebuild(s, lifecycle, &t);

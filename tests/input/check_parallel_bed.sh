@@ -8,7 +8,10 @@
 #     restarted on 2: the same ids, height and solid fraction within 0.5 % of the straight serial run;
 #  3. every snapshot of a parallel run holds every particle once (one file, written by all ranks);
 #  4. bad input on 2 ranks (every rank reads it) stops both, with one message naming file:line and
-#     key, and a non-zero exit status.
+#     key, and a non-zero exit status;
+#  5. an outlet (a drain under the pour, acting every 1 ms, to 0.08 s) on 1, 2 and 4 ranks, and on 2
+#     ranks restarted on 1 at 0.04 s: the same particles removed (count and mass exact, the same ids
+#     left) and the mass balance exact in every log.
 # The largest difference in position from the serial run is printed (the runs differ only in the
 # order of force sums, which a pour amplifies).
 # Usage: check_parallel_bed.sh <demRun> <mpiexec>
@@ -31,6 +34,16 @@ run() {   # ranks dir [args]
     fi
     grep -E "^(done|exchange|decomposition)" "$work/log" | sed "s|^|  $np rank(s), $(basename "$1"): |"
 }
+drain() { echo 'outlets { drain { type plane; point (0 0 0.004); normal (0 0 -1); interval 1e-3; } }' >> "$1/constant/demProperties"; }
+for np in 1 2 4; do make_case "$work/drain$np" 0.08; drain "$work/drain$np"; run $np "$work/drain$np"; cp "$work/log" "$work/drain$np.log"; done
+make_case "$work/drainR" 0.04; drain "$work/drainR"; run 2 "$work/drainR"
+sed -i 's/^endTime        0.04;/endTime        0.08;/' "$work/drainR/constant/demProperties"; run 1 "$work/drainR" -restart
+cp "$work/log" "$work/drainR.log"
+for c in drain1 drain2 drain4 drainR; do
+    grep "mass balance at t = 0.08 s" "$work/$c.log" | sed "s/^/  $c: /"
+    grep -q "mass balance at t = 0.08 s:.*(exact)" "$work/$c.log" || { echo "CHECK $c: the mass balance closes exactly FAIL"; exit 1; }
+done
+
 make_case "$work/bad" 0.25
 sed -i 's/youngsModulus 5e6/youngsModulus -5e6/' "$work/bad/constant/demProperties"
 if "$mpiexec" -np 2 --oversubscribe "$demRun" "$work/bad" > "$work/bad.log" 2>&1; then
@@ -80,5 +93,14 @@ for case, what in [("straight2", "2 ranks"), ("straight4", "4 ranks"), ("from4",
     check(f"{what}: bed height {h * 1e3:.4f} mm, {100 * (h / h1 - 1):+.3f} % of serial (0.5 % allowed)", abs(h / h1 - 1) <= 0.005)
     check(f"{what}: solid fraction {phi:.4f}, {100 * (phi / phi1 - 1):+.3f} % of serial (0.5 % allowed)", abs(phi / phi1 - 1) <= 0.005)
     print(f"  {what}: largest difference in position from the serial run {dx:.3g} m")
+def left(case):
+    with h5py.File(f"{work}/{case}/particles.h5", "r") as f:
+        s = f["snapshots"][sorted(f["snapshots"])[-1]]
+        return float(s.attrs["time"]), np.sort(s["id"][:]), s["lifecycle/balance"][:]
+t0, ids0, bal0 = left("drain1")
+for case, what in [("drain2", "2 ranks"), ("drain4", "4 ranks"), ("drainR", "2 ranks to 0.04 s, restarted on 1")]:
+    t, ids, bal = left(case)
+    check(f"outlet, {what}: {N - len(ids)} removed by t = {t:g} s as serially ({N - len(ids0)}), the same ids left, "
+          f"the same counts and mass", t == t0 and np.array_equal(ids, ids0) and np.array_equal(bal, bal0))
 sys.exit(1 if failed else 0)
 PY
