@@ -175,6 +175,25 @@ static void make_swaps(dem_system *s, long npick)
     free(rank_start);
 }
 
+/* The messages of one exchange: out_count[r] particles of rs bytes to each other rank r and
+ * in_count[r] from it, laid out rank after rank in the send and receive buffers (returned). */
+static void lay_out(dem_ghost_list *g, size_t rs, const int *out_count, const int *in_count, unsigned char **send,
+                    unsigned char **recv)
+{
+    const int me = dem_comm_rank();
+    size_t out = 0, in = 0;
+    for (int r = 0; r < g->nranks; r++) {
+        g->send_offset[r] = out;
+        g->send_bytes[r] = r == me ? 0 : (size_t)out_count[r] * rs;
+        out += g->send_bytes[r];
+        g->recv_offset[r] = in;
+        g->recv_bytes[r] = r == me ? 0 : (size_t)in_count[r] * rs;
+        in += g->recv_bytes[r];
+    }
+    *send = reserve_bytes(&g->send_buf, &g->send_buf_capacity, out);
+    *recv = reserve_bytes(&g->recv_buf, &g->recv_buf_capacity, in);
+}
+
 /* Pack `roles` of every swap to another rank (its shift added when `shifted`), exchange, unpack
  * into the ghost slots; the swaps to this rank copy without a buffer. */
 static void exchange_forward(dem_system *s, unsigned roles, int shifted)
@@ -182,18 +201,8 @@ static void exchange_forward(dem_system *s, unsigned roles, int shifted)
     dem_particles *p = &s->p;
     dem_ghost_list *g = &s->ghosts;
     const int me = dem_comm_rank(), nr = g->nranks;
-    const size_t rs = dem_particles_role_size(roles);
-    size_t out = 0, in = 0;
-    for (int r = 0; r < nr; r++) {
-        g->send_offset[r] = out;
-        g->send_bytes[r] = r == me ? 0 : (size_t)g->send_count[r] * rs;
-        out += g->send_bytes[r];
-        g->recv_offset[r] = in;
-        g->recv_bytes[r] = r == me ? 0 : (size_t)g->recv_count[r] * rs;
-        in += g->recv_bytes[r];
-    }
-    unsigned char *send = reserve_bytes(&g->send_buf, &g->send_buf_capacity, out);
-    unsigned char *recv = reserve_bytes(&g->recv_buf, &g->recv_buf_capacity, in);
+    unsigned char *send, *recv;
+    lay_out(g, dem_particles_role_size(roles), g->send_count, g->recv_count, &send, &recv);
     for (int k = 0; k < g->nswap; k++) {
         const dem_ghost_swap *w = &g->swap[k];
         const dem_vec3 *shift = shifted ? w->shift : NULL;
@@ -242,18 +251,8 @@ void dem_ghosts_fold_forces(dem_system *s)
     dem_particles *p = &s->p;
     dem_ghost_list *g = &s->ghosts;
     const int me = dem_comm_rank(), nr = g->nranks;
-    const size_t rs = dem_particles_role_size(PF_REVERSE);
-    size_t out = 0, in = 0;
-    for (int r = 0; r < nr; r++) {   /* each ghost goes back to the rank it came from */
-        g->send_offset[r] = out;
-        g->send_bytes[r] = r == me ? 0 : (size_t)g->recv_count[r] * rs;
-        out += g->send_bytes[r];
-        g->recv_offset[r] = in;
-        g->recv_bytes[r] = r == me ? 0 : (size_t)g->send_count[r] * rs;
-        in += g->recv_bytes[r];
-    }
-    unsigned char *send = reserve_bytes(&g->send_buf, &g->send_buf_capacity, out);
-    unsigned char *recv = reserve_bytes(&g->recv_buf, &g->recv_buf_capacity, in);
+    unsigned char *send, *recv;   /* each ghost goes back to the rank it came from */
+    lay_out(g, dem_particles_role_size(PF_REVERSE), g->recv_count, g->send_count, &send, &recv);
     for (int r = 0; r < nr; r++)
         if (r != me && g->recv_count[r])
             dem_particles_take_roles(p, PF_REVERSE, p->n + g->recv_first[r], g->recv_count[r], send + g->send_offset[r]);
