@@ -62,11 +62,15 @@ Checks, per run (one CHECK line each; exit 1 on a FAIL):
   <run>_momentum:   the largest relative residual of the gas momentum balance over every fluid
                     step (postProcessing/momentumBalance.dat: |residual| / the balance's largest
                     term: pressure drop x area, weight, particles' force, acceleration), 1 %.
-With --coarse-graining (Allrun -coarseGraining), each run with coarseGraining > 1 against the
-run with 1:
-  <run>_vs_cg1_umf: the measured U_mf (as <run>_umf measures it), 5 %;
-  <run>_vs_cg1_bed: the packed bed's pressure drop per bed weight, (a U + b U^2) / (W/A) of the
-                    fitted branch at half the cg-1 run's U_mf,ref, 5 %.
+With --coarse-graining (Allrun -coarseGraining), each coarse-graining factor against the run
+with 1, as the mean over its pours (runs cgK, cgK-<seed>, ...: the same case poured with other
+insertion seeds). A bed of 168 parcels packs to a voidage that moves by +-0.01 from pour to pour
+(measured, 4 seeds at cg 3: 0.3867-0.4019), and a packed bed's pressure drop moves with it by
+several per cent; the mean over 4 pours is the coarse graining's, one pour is chance (cg 1's 4536
+beads: 0.3930). The extra pours' own checks above are printed as INFO; cgK's stay checked.
+  cgK_vs_cg1_umf: the mean measured U_mf (as <run>_umf measures it), 5 %;
+  cgK_vs_cg1_bed: the mean packed bed's pressure drop per bed weight, (a U + b U^2) / (W/A) of the
+                  fitted branch at half the cg-1 run's U_mf,ref, 5 %.
 Usage: postProcess.py [--coarse-graining] <run directory>...
 """
 import os
@@ -298,6 +302,15 @@ def bed_states(run, c):
 checks = Checks()
 
 
+class Reported(Checks):
+    """The checks of an extra pour of the ensemble (-coarseGraining): printed, not counted."""
+
+    def _line(self, ok, text, note):
+        print(f"INFO {text} {'(within)' if ok else '(outside)'} the tolerance; one pour of the ensemble, "
+              "not checked alone" + (f" ({note})" if note else ""))
+        return bool(ok)
+
+
 def info(name, text):
     print(f"INFO {name} {text}")
 
@@ -452,16 +465,28 @@ def compare_coarse_graining(results):
         info(r["name"], f"coarseGraining {cg:g}: bed L = {1e3 * r['L0']:.2f} mm, voidage {r['e0']:.4f} "
              f"(cg 1: {1e3 * ref['L0']:.2f} mm, {ref['e0']:.4f}); U_mf {r['umf']:.4f} m/s; packed-bed "
              f"pressure drop at {u:.4f} m/s {packed(r) * r['W']:.2f} Pa of W/A {r['W']:.2f} Pa")
-        if r is ref:
-            continue
-        checks.relative(f"{r['name']}_vs_cg1_umf", r["umf"], ref["umf"], TOL_CG)
-        checks.relative(f"{r['name']}_vs_cg1_bed", packed(r), packed(ref), TOL_CG)
+    for cg in sorted({r["c"]["cg"] for r in results} - {1.0}):
+        pours = [r for r in results if r["c"]["cg"] == cg]
+        name = f"cg{cg:g}"
+        e = np.array([r["e0"] for r in pours])
+        info(name, f"{len(pours)} pours: voidage {e.mean():.4f} mean, {e.min():.4f}-{e.max():.4f}; U_mf "
+             f"{np.mean([r['umf'] for r in pours]):.4f} m/s mean; packed bed per weight "
+             + ", ".join(f"{packed(r):.4f}" for r in pours) + f" (cg 1: {packed(ref):.4f})")
+        checks.relative(f"{name}_vs_cg1_umf", np.mean([r["umf"] for r in pours]), ref["umf"], TOL_CG,
+                        f"the mean of {len(pours)} pours")
+        checks.relative(f"{name}_vs_cg1_bed", np.mean([packed(r) for r in pours]), packed(ref), TOL_CG,
+                        f"the mean of {len(pours)} pours")
 
 
 def main(argv):
     compare = "--coarse-graining" in argv
     runs = [a for a in argv if a != "--coarse-graining"]
-    results = [analyse(r) for r in runs]
+    global checks
+    counted, results = checks, []
+    for r in runs:   # an extra pour of the ensemble (cgK-<seed>) is reported, not checked alone
+        checks = Reported() if compare and "-" in os.path.basename(os.path.normpath(r)) else counted
+        results.append(analyse(r))
+    checks = counted
     if compare:
         compare_coarse_graining(results)
     ncol = 2 if len(results) > 1 else 1
