@@ -5,9 +5,9 @@
 #include <stdlib.h>
 #include <unistd.h>
 
-#include "comm.h"
 #include <hdf5.h>
 
+#include "comm.h"
 #include "error.h"
 #include "io.h"
 #include "reduce.h"

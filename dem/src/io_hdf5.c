@@ -134,9 +134,8 @@ static void place(int64_t rows, int64_t *offset, int64_t *total)
         *total = rows;
         return;
     }
-    int64_t *counts = dem_calloc((size_t)size, sizeof *counts);
-    counts[rank] = rows;
-    dem_reduce_int64s(counts, size, DEM_REDUCE_SUM);
+    int64_t *counts = dem_malloc((size_t)size * sizeof *counts);
+    dem_reduce_gather_int64s(&rows, 1, counts);
     *offset = *total = 0;
     for (int r = 0; r < size; r++) {
         if (r < rank) *offset += counts[r];

@@ -56,17 +56,16 @@ void dem_lifecycle_apply(dem_system *s)
     if (s->nstreams) dem_streams_insert(s, s->step + 1);
 }
 
-/* A tally summed over the ranks, exactly: every rank's (count, mass) in its own slots of one
- * reduction (a sum with one term per slot), added up here in 128 bits. In a parallel run each
- * rank counts what it removed and inserted; the balance, the log and the snapshot are of them all. */
+/* A tally summed over the ranks, exactly: every rank's (count, mass) gathered (reduce.h) and
+ * added up here in 128 bits. In a parallel run each rank counts what it removed and inserted;
+ * the balance, the log and the snapshot are of them all. */
 static dem_tally over_ranks(dem_tally t)
 {
-    const int size = dem_comm_size(), rank = dem_comm_rank();
+    const int size = dem_comm_size();
     if (size == 1) return t;
-    int64_t *v = dem_calloc((size_t)3 * size, sizeof *v);
-    v[3 * rank] = t.count;
-    dem_quanta_split(t.mass, &v[3 * rank + 1], &v[3 * rank + 2]);
-    dem_reduce_int64s(v, 3 * size, DEM_REDUCE_SUM);
+    int64_t mine[3] = {t.count, 0, 0}, *v = dem_malloc((size_t)3 * size * sizeof *v);
+    dem_quanta_split(t.mass, &mine[1], &mine[2]);
+    dem_reduce_gather_int64s(mine, 3, v);
     dem_tally sum = {0, 0};
     for (int r = 0; r < size; r++) dem_tally_add(&sum, v[3 * r], dem_quanta_join(v[3 * r + 1], v[3 * r + 2]));
     free(v);

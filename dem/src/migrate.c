@@ -15,15 +15,20 @@ static void remove_leaving(dem_particles *p, const int *dest, int n, int me)
         if (dest[i] != me) dem_particles_remove(p, i);
 }
 
+/* The rank whose box owns each particle, by its position wrapped into the domain (malloc'd). */
+static int *owners(dem_system *s)
+{
+    dem_neighbour_wrap(s);
+    int *dest = dem_malloc((size_t)(s->p.n ? s->p.n : 1) * sizeof(int));
+    for (int i = 0; i < s->p.n; i++) dest[i] = dem_decomposition_owner(&s->decomp, s->p.x[i]);
+    return dest;
+}
+
 void dem_migrate_keep_owned(dem_system *s)
 {
     if (dem_comm_size() == 1) return;
-    dem_particles *p = &s->p;
-    dem_neighbour_wrap(s);
-    const int n = p->n, me = dem_comm_rank();
-    int *dest = dem_malloc((size_t)(n ? n : 1) * sizeof(int));
-    for (int i = 0; i < n; i++) dest[i] = dem_decomposition_owner(&s->decomp, p->x[i]);
-    remove_leaving(p, dest, n, me);
+    int *dest = owners(s);
+    remove_leaving(&s->p, dest, s->p.n, dem_comm_rank());
     free(dest);
 }
 
@@ -70,14 +75,11 @@ void dem_migrate(dem_system *s)
     dem_particles *p = &s->p;
     dem_contact_rows *cr = &s->carried;
     const int me = dem_comm_rank(), nr = dem_comm_size(), hs = s->history_size, n = p->n;
-    dem_neighbour_wrap(s);   /* ownership goes by the position in the domain */
-    int *dest = dem_malloc((size_t)(n ? n : 1) * sizeof(int));
+    int *dest = owners(s);
     int64_t *np_to = dem_calloc((size_t)nr, sizeof(int64_t)), *nc_to = dem_calloc((size_t)nr, sizeof(int64_t));
     int64_t *bytes_to = dem_malloc((size_t)nr * sizeof(int64_t)), *bytes_from = dem_malloc((size_t)nr * sizeof(int64_t));
-    for (int i = 0; i < n; i++) {
-        dest[i] = dem_decomposition_owner(&s->decomp, p->x[i]);
+    for (int i = 0; i < n; i++)
         if (dest[i] != me) np_to[dest[i]]++;
-    }
     /* the contacts by row, gathered at the last build's indices: the pairs of row r and the wall
      * contacts whose partner is r go where the particle of row r goes */
     int *now = rows_now(p, cr);

@@ -28,5 +28,8 @@ void dem_reduce_doubles(double *values, int n, enum dem_reduce_op op);
 void dem_reduce_int64s(int64_t *values, int n, enum dem_reduce_op op);
 /* Whether the flag is set on any rank. */
 int dem_reduce_any(int flag);
+/* Every rank's n int64s, in rank order: all[r * n .. r * n + n - 1] are rank r's `mine` (all holds
+ * n x the number of ranks); one sum with one term per slot, so exact. */
+void dem_reduce_gather_int64s(const int64_t *mine, int n, int64_t *all);
 
 #endif
