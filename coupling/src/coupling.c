@@ -28,6 +28,7 @@
 #include <time.h>
 
 #include "case.h"
+#include "comm.h"
 #include "coupling.h"
 #include "dict.h"
 #include "number.h"
@@ -36,6 +37,8 @@
 #include "interpolate.h"
 #include "io.h"
 #include "particle_forces.h"
+#include "proxies.h"
+#include "reduce.h"
 #include "restart.h"
 #include "system.h"
 #include "timestep.h"
@@ -63,9 +66,21 @@ struct coupling {
     cpl_voidfraction vf;
     enum cpl_interp_scheme interp_scheme;
     cpl_interp interp;             /* U and grad p as one 6-component field: one search per particle */
-    double (*ugp)[6];              /* [ncells] U, grad p for the interpolation; [np] at the particles */
+    double (*ugp)[6];              /* [ncells] U, grad p for the interpolation; [copies] at the particles */
     double (*ugp_p)[6];
-    cpl_interp_tet *tets;          /* cellPoint: each particle's tetrahedron (current order) */
+    cpl_interp_tet *tets;          /* cellPoint: each copy's tetrahedron */
+    /* The particles' copies on this rank's cells (proxies.h): serially one per particle, in the
+     * DEM's order. The void fraction, the gather and the spreading work on the copies; the
+     * forces are evaluated on the owner. */
+    cpl_proxies pr;
+    int copy_cap;
+    double (*copy_x)[3], *copy_r, *copy_volume;
+    int *copy_cell;                /* the cell of the copy's centre among this rank's (-1: not here) */
+    double *copy_z, *copy_norm, *copy_found;
+    double *copy_beta, (*copy_f)[3], (*copy_v)[3];
+    double *copy_buf, *particle_buf;   /* the moves' rows: [copies][8], [particles][8] */
+    double *reach;                 /* [particles] how far from its centre a particle's volume may fall [m] */
+    long fluid_steps;
     int tets_valid, field_set;
     long tets_generation, vf_generation;   /* the particles' generation (particles.h) they were made for */
     cpl_force_params params;
@@ -140,14 +155,35 @@ static void grow_particles(coupling *c, int n)
     if (n <= c->np_cap) return;
     c->np_cap = n + n / 2 + 16;
     c->d = dem_realloc(c->d, (size_t)c->np_cap * sizeof *c->d);
+    c->reach = dem_realloc(c->reach, (size_t)c->np_cap * sizeof *c->reach);
+    c->particle_buf = dem_realloc(c->particle_buf, (size_t)c->np_cap * 8 * sizeof *c->particle_buf);
     c->volume = dem_realloc(c->volume, (size_t)c->np_cap * sizeof *c->volume);
     c->alpha_p = dem_realloc(c->alpha_p, (size_t)c->np_cap * sizeof *c->alpha_p);
     c->u_p = dem_realloc(c->u_p, (size_t)c->np_cap * sizeof *c->u_p);
     c->gp_p = dem_realloc(c->gp_p, (size_t)c->np_cap * sizeof *c->gp_p);
-    if (c->interp_scheme != CPL_INTERP_CELL) c->ugp_p = dem_realloc(c->ugp_p, (size_t)c->np_cap * sizeof *c->ugp_p);
+}
+
+/* room for n copies on this rank */
+static void grow_copies(coupling *c, int n)
+{
+    if (n <= c->copy_cap) return;
+    c->copy_cap = n + n / 2 + 16;
+    const size_t cap = (size_t)c->copy_cap;
+    c->copy_x = dem_realloc(c->copy_x, cap * sizeof *c->copy_x);
+    c->copy_r = dem_realloc(c->copy_r, cap * sizeof *c->copy_r);
+    c->copy_volume = dem_realloc(c->copy_volume, cap * sizeof *c->copy_volume);
+    c->copy_cell = dem_realloc(c->copy_cell, cap * sizeof *c->copy_cell);
+    c->copy_z = dem_realloc(c->copy_z, cap * sizeof *c->copy_z);
+    c->copy_norm = dem_realloc(c->copy_norm, cap * sizeof *c->copy_norm);
+    c->copy_found = dem_realloc(c->copy_found, cap * sizeof *c->copy_found);
+    c->copy_beta = dem_realloc(c->copy_beta, cap * sizeof *c->copy_beta);
+    c->copy_f = dem_realloc(c->copy_f, cap * sizeof *c->copy_f);
+    c->copy_v = dem_realloc(c->copy_v, cap * sizeof *c->copy_v);
+    c->copy_buf = dem_realloc(c->copy_buf, cap * 8 * sizeof *c->copy_buf);
+    if (c->interp_scheme != CPL_INTERP_CELL) c->ugp_p = dem_realloc(c->ugp_p, cap * sizeof *c->ugp_p);
     if (c->interp_scheme == CPL_INTERP_CELL_POINT) {
-        c->tets = dem_realloc(c->tets, (size_t)c->np_cap * sizeof *c->tets);
-        for (int i = 0; i < c->np_cap; i++) c->tets[i].cell = -1;
+        c->tets = dem_realloc(c->tets, cap * sizeof *c->tets);
+        for (size_t i = 0; i < cap; i++) c->tets[i].cell = -1;
     }
     c->tets_valid = 0;
 }
@@ -158,8 +194,16 @@ static cpl_cell_weights weights_of(const coupling *c)
     return w;
 }
 
-/* Void fraction with the particles' current positions (each particle's last cell as the walk's
- * start). */
+static long global_count(long n)
+{
+    int64_t v = n;
+    dem_reduce_int64s(&v, 1, DEM_REDUCE_SUM);
+    return (long)v;
+}
+
+/* Void fraction with the particles' current positions: each particle copied to the ranks whose
+ * cells its volume may reach (proxies.h), weighed there (each particle's last cell as the walk's
+ * start), the weights normalised by their sum over the ranks, and the volumes mapped. */
 static void particle_volumes(coupling *c)
 {
     for (int i = 0; i < c->s.p.n; i++) c->volume[i] = dem_particle_volume(&c->s, i);
@@ -169,13 +213,53 @@ static void update_void_fraction(coupling *c)
 {
     double t = dem_clock();
     dem_particles *p = &c->s.p;
-    grow_particles(c, p->n);
+    const int np = p->n;
+    grow_particles(c, np);
     particle_volumes(c);
-    const int outside = cpl_vf_compute_volumes(&c->vf, &c->mesh, p->n, (const double (*)[3])p->x, p->radius,
-                                               c->volume, p->fluid_cell);
+    double *row = c->particle_buf;
+    for (int i = 0; i < np; i++) {
+        c->reach[i] = c->vf.model == CPL_VF_CENTRE ? 0.0 : p->radius[i];
+        double *o = row + (size_t)i * 6;
+        for (int q = 0; q < 3; q++) o[q] = p->x[i][q];
+        o[3] = p->radius[i];
+        o[4] = c->volume[i];
+        o[5] = p->fluid_cell[i];
+    }
+    cpl_proxies_place(&c->pr, np, (const double (*)[3])p->x, c->reach);
+    const int n = c->pr.n;
+    grow_copies(c, n);
+    cpl_proxies_forward(&c->pr, 6, row, c->copy_buf);
+    for (int k = 0; k < n; k++) {
+        const double *o = c->copy_buf + (size_t)k * 6;
+        for (int q = 0; q < 3; q++) c->copy_x[k][q] = o[q];
+        c->copy_r[k] = o[3];
+        c->copy_volume[k] = o[4];
+        c->copy_cell[k] = (int)o[5];
+    }
+    cpl_vf_weigh(&c->vf, &c->mesh, n, (const double (*)[3])c->copy_x, c->copy_r, c->copy_cell, c->copy_z);
+    /* the owner: the sum of the weights over the ranks, and the cell of the centre (-1: none) */
+    double *norm = c->d, *cell = c->alpha_p;   /* scratch until evaluate_forces */
+    cpl_proxies_reverse(&c->pr, 1, c->copy_z, norm, np, CPL_PROXY_SUM);
+    for (int k = 0; k < n; k++) c->copy_norm[k] = c->copy_cell[k];
+    cpl_proxies_reverse(&c->pr, 1, c->copy_norm, cell, np, CPL_PROXY_MAX);
+    long outside = 0;
+    for (int i = 0; i < np; i++) {
+        p->fluid_cell[i] = (int)cell[i];
+        outside += cell[i] < 0;
+        row[2 * i] = norm[i];
+        row[2 * i + 1] = cell[i] >= 0;
+    }
+    cpl_proxies_forward(&c->pr, 2, row, c->copy_buf);
+    for (int k = 0; k < n; k++) {
+        c->copy_norm[k] = c->copy_buf[2 * k];
+        c->copy_found[k] = c->copy_buf[2 * k + 1];
+    }
+    cpl_vf_finish(&c->vf, &c->mesh, c->copy_norm, c->copy_found, c->copy_r, c->copy_volume);
+    c->tets_valid = 0;
     c->vf_generation = p->generation;
+    outside = c->pr.size > 1 ? global_count(outside) : outside;
     if (outside > 0 && outside != c->outside_reported) {
-        dem_warning("coupling: %d particle(s) lie outside the fluid mesh at t = %g s; they feel no fluid "
+        dem_warning("coupling: %ld particle(s) lie outside the fluid mesh at t = %g s; they feel no fluid "
                     "force and give none to the fluid", outside, c->s.time);
         c->outside_reported = outside;
     }
@@ -193,12 +277,23 @@ static void evaluate_forces(coupling *c, const double (*U)[3], const double (*gr
     dem_particles *p = &c->s.p;
     if (c->vf_generation != p->generation) update_void_fraction(c);   /* particles came or went since */
     double t = dem_clock();
+    /* on this rank's cells, per copy: its share of alpha, U and grad p (cell: with the void
+     * fraction's weights; the other schemes at the centre, by the rank that holds it) */
+    const int n = c->pr.n;
+    double *out = c->copy_buf;
     const cpl_cell_weights w = weights_of(c);
-    cpl_gather_scalar(&w, c->vf.alpha, c->alpha_p);
-    if (c->interp_scheme == CPL_INTERP_CELL) {   /* the spreading weights: exact balance */
-        cpl_gather_vector(&w, U, c->u_p);
-        cpl_gather_vector(&w, grad_p, c->gp_p);
-    } else {
+    for (int k = 0; k < n; k++) {
+        double s7[7] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+        for (int j = w.start[k]; j < w.start[k + 1]; j++) {
+            const double wj = w.weight[j];
+            const int cj = w.cell[j];
+            s7[0] += wj * c->vf.alpha[cj];
+            if (c->interp_scheme == CPL_INTERP_CELL)
+                for (int q = 0; q < 3; q++) { s7[1 + q] += wj * U[cj][q]; s7[4 + q] += wj * grad_p[cj][q]; }
+        }
+        memcpy(out + (size_t)k * 7, s7, sizeof s7);
+    }
+    if (c->interp_scheme != CPL_INTERP_CELL) {
         if (new_field || !c->field_set) {
             for (int k = 0; k < c->mesh.ncells; k++)
                 for (int q = 0; q < 3; q++) { c->ugp[k][q] = U[k][q]; c->ugp[k][3 + q] = grad_p[k][q]; }
@@ -207,15 +302,22 @@ static void evaluate_forces(coupling *c, const double (*U)[3], const double (*gr
         }
         if (c->interp_scheme == CPL_INTERP_CELL_POINT) {
             if (new_positions || !c->tets_valid || c->tets_generation != p->generation)
-                cpl_interp_locate(&c->interp, &c->mesh, p->n, p->fluid_cell, (const double (*)[3])p->x, c->tets);
+                cpl_interp_locate(&c->interp, &c->mesh, n, c->copy_cell, (const double (*)[3])c->copy_x, c->tets);
             c->tets_valid = 1;
             c->tets_generation = p->generation;
-            cpl_interp_apply(&c->interp, &c->mesh, p->n, c->tets, &c->ugp_p[0][0]);
+            cpl_interp_apply(&c->interp, &c->mesh, n, c->tets, &c->ugp_p[0][0]);
         } else {
-            cpl_interp_particles(&c->interp, &c->mesh, p->n, p->fluid_cell, (const double (*)[3])p->x, &c->ugp_p[0][0]);
+            cpl_interp_particles(&c->interp, &c->mesh, n, c->copy_cell, (const double (*)[3])c->copy_x, &c->ugp_p[0][0]);
         }
-        for (int i = 0; i < p->n; i++)
-            for (int q = 0; q < 3; q++) { c->u_p[i][q] = c->ugp_p[i][q]; c->gp_p[i][q] = c->ugp_p[i][3 + q]; }
+        for (int k = 0; k < n; k++)
+            for (int q = 0; q < 6; q++) out[(size_t)k * 7 + 1 + q] = c->ugp_p[k][q];
+    }
+    double *row = c->particle_buf;
+    cpl_proxies_reverse(&c->pr, 7, out, row, p->n, CPL_PROXY_SUM);
+    for (int i = 0; i < p->n; i++) {
+        const double *o = row + (size_t)i * 7;
+        c->alpha_p[i] = o[0];
+        for (int q = 0; q < 3; q++) { c->u_p[i][q] = o[1 + q]; c->gp_p[i][q] = o[4 + q]; }
     }
     lap(c, CPL_STAGE_INTERPOLATION, &t);
     for (int i = 0; i < p->n; i++) c->d[i] = 2.0 * p->radius[i];
@@ -239,6 +341,30 @@ static void store_forces(coupling *c, int exchanged_too)
             if (exchanged_too) p->f_fluid[i][q] = c->forces.f_exchange[i][q];
         }
     }
+}
+
+/* The forces the fluid receives, from the owners to the copies, spread onto this rank's cells
+ * (exchange.h) with the void fraction's weights. */
+static void spread_forces(coupling *c)
+{
+    const dem_particles *p = &c->s.p;
+    double *row = c->particle_buf;
+    for (int i = 0; i < p->n; i++) {
+        double *o = row + (size_t)i * 7;
+        o[0] = c->forces.beta[i];
+        for (int q = 0; q < 3; q++) { o[1 + q] = c->forces.f_exchange[i][q]; o[4 + q] = p->v[i][q]; }
+    }
+    cpl_proxies_forward(&c->pr, 7, row, c->copy_buf);
+    const int n = c->pr.n;
+    for (int k = 0; k < n; k++) {
+        const double *o = c->copy_buf + (size_t)k * 7;
+        c->copy_beta[k] = o[0];
+        for (int q = 0; q < 3; q++) { c->copy_f[k][q] = o[1 + q]; c->copy_v[k][q] = o[4 + q]; }
+    }
+    const cpl_fluid_forces at_copies = {n, n, c->copy_beta, NULL, c->copy_f, NULL};
+    const cpl_cell_weights w = weights_of(c);
+    cpl_exchange_cells(&w, &at_copies, (const double (*)[3])c->copy_v, c->mesh.ncells, c->mesh.cell_volume, c->ksl,
+                       c->up, c->source);
 }
 
 /* p->f_ext = the fluid force at each particle's current velocity (as cpl_fluid_force, from the
@@ -266,9 +392,11 @@ static void add_fluid_force(const coupling *c, double sum[3])
 static void write_means(coupling *c)
 {
     double v[3], x[3];
-    coupling_particle_means(c, v, x);
+    coupling_particle_means(c, v, x);   /* every rank: sums over the ranks */
+    const long np = coupling_particle_count(c);
+    if (!c->means) return;              /* rank 0 writes */
     const double *fw = c->wall_force, *ff = c->fluid_force;
-    fprintf(c->means, "%.9g %d %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.9g", c->s.time, c->s.p.n,
+    fprintf(c->means, "%.9g %ld %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.9g", c->s.time, np,
             x[0], x[1], x[2], v[0], v[1], v[2], fw[0], fw[1], fw[2], ff[0], ff[1], ff[2]);
     for (int w = 0; w < c->s.nwalls; w++)
         fprintf(c->means, " %.9g %.9g %.9g", c->each_wall[w][0], c->each_wall[w][1], c->each_wall[w][2]);
@@ -281,20 +409,20 @@ static void write_means(coupling *c)
  * empty. Said once, at the start. */
 static void warn_large_particles(const coupling *c)
 {
-    const dem_particles *p = &c->s.p;
-    int count = 0;
-    double worst = 0.0;
-    for (int i = 0; i < p->n; i++) {
-        if (p->fluid_cell[i] < 0) continue;
-        const double ratio = 2.0 * p->radius[i] / cbrt(c->mesh.cell_volume[p->fluid_cell[i]]);
+    double count = 0, worst = 0.0;
+    for (int k = 0; k < c->pr.n; k++) {   /* the copies whose centre is in this rank's cells */
+        if (c->copy_cell[k] < 0) continue;
+        const double ratio = 2.0 * c->copy_r[k] / cbrt(c->mesh.cell_volume[c->copy_cell[k]]);
         if (ratio > 1.0) count++;
         worst = fmax(worst, ratio);
     }
-    if (count)
-        dem_warning("couplingProperties: voidFraction model centre: %d of %d particles are wider than their fluid "
+    dem_reduce_doubles(&count, 1, DEM_REDUCE_SUM);
+    dem_reduce_doubles(&worst, 1, DEM_REDUCE_MAX);
+    if (count > 0)
+        dem_warning("couplingProperties: voidFraction model centre: %.0f of %ld particles are wider than their fluid "
                     "cell (d up to %.2f times the cell size V_cell^(1/3)); the centre model puts each particle's "
                     "volume into one cell, so those cells fall to alphaMin: use a coarser mesh or model divided",
-                    count, p->n, worst);
+                    count, global_count(c->s.p.n), worst);
 }
 
 /* postProcessing/particles.dat: a fresh run writes it anew; a continued run keeps the lines up
@@ -324,6 +452,11 @@ static void open_means(coupling *c, const char *path)
             nkept += len;
         }
         fclose(old);
+    }
+    if (dem_comm_rank() != 0) {   /* the sums are taken on every rank, written by rank 0 */
+        free(kept);
+        if (!nkept) write_means(c);
+        return;
     }
     c->means = fopen(path, "w");
     if (!c->means) dem_fatal("coupling: cannot write %s", path);
@@ -399,6 +532,26 @@ static void check_periodic_sides(const coupling *c)
     }
 }
 
+/* What the parallel coupling does not do yet (issue 23): each says so and stops. The centre and
+ * divided void fractions and the cell interpolation need nothing beyond a rank's own cells and
+ * the particles' copies; the gaussian kernel's walk through faces, the interpolation's
+ * neighbours and the cyclic pairs would need the cells across processor patches. */
+static void refuse_in_parallel(const coupling *c, enum cpl_vf_model vf_model)
+{
+    char path[4200];
+    snprintf(path, sizeof path, "%s/constant/couplingProperties", c->case_dir);
+    if (vf_model == CPL_VF_GAUSSIAN)
+        dem_fatal_at(path, "voidFraction model gaussian runs in one process only, not yet with -parallel (its kernel "
+                     "walks through the faces into other ranks' cells): use centre or divided, or run serially");
+    if (c->interp_scheme != CPL_INTERP_CELL)
+        dem_fatal_at(path, "interpolation %s runs in one process only, not yet with -parallel (it needs the cells "
+                     "across processor patches): use interpolation cell, or run serially", interp_names_of(c->interp_scheme));
+    if (c->mesh.cyclic_partner || c->s.periodic[0] || c->s.periodic[1] || c->s.periodic[2])
+        dem_fatal("coupling: a periodic case (cyclic patches) runs in one process only, not yet with -parallel");
+    if (c->s.bodies.n)
+        dem_fatal("coupling: multisphere bodies run in one process only, not yet with -parallel");
+}
+
 int coupling_case_gravity(const char *case_dir, double g[3]) { return dem_case_gravity(case_dir, g); }
 
 coupling *coupling_create(const char *case_dir, cpl_mesh *mesh, double rho_f, double nu_f, double dt_f,
@@ -425,8 +578,11 @@ coupling *coupling_create(const char *case_dir, cpl_mesh *mesh, double rho_f, do
     for (int q = 0; q < 3; q++) c->params.gravity[q] = c->s.gravity[q];
     c->params.coarse_graining = c->s.coarse_graining;   /* demProperties' coarseGraining */
     cpl_force_params_check(&c->params);
+    cpl_proxies_init(&c->pr, &c->mesh);
+    if (c->pr.size > 1) refuse_in_parallel(c, vf_model);
     check_periodic_sides(c);
     cpl_vf_init(&c->vf, &c->mesh, vf_model, alpha_min);
+    c->vf.partial = c->pr.size > 1;
     if (vf_model == CPL_VF_GAUSSIAN) { c->vf.kernel_width = kernel_width; c->vf.kernel_cutoff = kernel_cutoff; }
     if (c->interp_scheme != CPL_INTERP_CELL) {
         cpl_interp_init(&c->interp, &c->mesh, c->interp_scheme, 6);
@@ -449,9 +605,9 @@ coupling *coupling_create(const char *case_dir, cpl_mesh *mesh, double rho_f, do
     snprintf(path, sizeof path, "%s/postProcessing/particles.dat", case_dir);
     c->each_wall = dem_calloc((size_t)c->s.nwalls + 1, sizeof *c->each_wall);
     open_means(c, path);
-    dem_info("coupling: %d particles, %d fluid cells; %d DEM steps of %g s per fluid step; void fraction %s "
+    dem_info("coupling: %ld particles, %ld fluid cells; %d DEM steps of %g s per fluid step; void fraction %s "
              "(alphaMin %g), drag %s, model %s, %s exchange, %s interpolation",
-             c->s.p.n, nc, c->interval, c->s.dt, vf_model == CPL_VF_CENTRE ? "centre" : vf_model == CPL_VF_DIVIDED ? "divided" : "gaussian",
+             global_count(c->s.p.n), (long)global_count(nc), c->interval, c->s.dt, vf_model == CPL_VF_CENTRE ? "centre" : vf_model == CPL_VF_DIVIDED ? "divided" : "gaussian",
              alpha_min, cpl_drag_law_names[c->params.drag], cpl_model_type_names[c->params.model],
              cpl_exchange_mode_names[c->params.exchange], interp_names_of(c->interp_scheme));
     if (c->s.coarse_graining > 1.0)
@@ -496,14 +652,18 @@ void coupling_evolve(coupling *c, const double (*U)[3], const double (*grad_p)[3
     }
     for (int w = 0; w < c->s.nwalls; w++)
         for (int q = 0; q < 3; q++) c->each_wall[w][q] /= c->interval;
+    if (c->pr.size > 1) {   /* each rank summed its own particles */
+        dem_reduce_doubles(c->wall_force, 3, DEM_REDUCE_SUM);
+        dem_reduce_doubles(c->fluid_force, 3, DEM_REDUCE_SUM);
+        if (c->s.nwalls) dem_reduce_doubles(&c->each_wall[0][0], 3 * c->s.nwalls, DEM_REDUCE_SUM);
+    }
+    c->fluid_steps++;
     dem_system_check_health(&c->s);
     lap(c, CPL_STAGE_DEM, &t);
     update_void_fraction(c);                            /* 3 */
     evaluate_forces(c, U, grad_p, 0, 1);
     t = dem_clock();
-    const cpl_cell_weights w = weights_of(c);
-    cpl_exchange_cells(&w, &c->forces, (const double (*)[3])c->s.p.v, c->mesh.ncells, c->mesh.cell_volume,
-                       c->ksl, c->up, c->source);
+    spread_forces(c);
     store_forces(c, 1);
     c->exchanged = 1;
     lap(c, CPL_STAGE_EXCHANGE, &t);
@@ -517,15 +677,19 @@ const double (*coupling_particle_velocity(const coupling *c))[3] { return (const
 const double (*coupling_explicit_source(const coupling *c))[3] { return (const double (*)[3])c->source; }
 enum cpl_model_type coupling_model_type(const coupling *c) { return c->params.model; }
 int coupling_interval(const coupling *c) { return c->interval; }
-int coupling_particle_count(const coupling *c) { return c->s.p.n; }
+long coupling_particle_count(const coupling *c) { return c->pr.size > 1 ? global_count(c->s.p.n) : c->s.p.n; }
 
 void coupling_particle_means(const coupling *c, double v[3], double x[3])
 {
     const dem_particles *p = &c->s.p;
-    for (int q = 0; q < 3; q++) v[q] = x[q] = 0.0;
+    double sum[7] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, (double)p->n};
     for (int i = 0; i < p->n; i++)
-        for (int q = 0; q < 3; q++) { v[q] += p->v[i][q]; x[q] += p->x[i][q]; }
-    for (int q = 0; q < 3; q++) if (p->n) { v[q] /= p->n; x[q] /= p->n; }
+        for (int q = 0; q < 3; q++) { sum[q] += p->v[i][q]; sum[3 + q] += p->x[i][q]; }
+    if (c->pr.size > 1) dem_reduce_doubles(sum, 7, DEM_REDUCE_SUM);
+    for (int q = 0; q < 3; q++) {
+        v[q] = sum[6] > 0 ? sum[q] / sum[6] : 0.0;
+        x[q] = sum[6] > 0 ? sum[3 + q] / sum[6] : 0.0;
+    }
 }
 
 void coupling_particle_forces(const coupling *c, double fluid[3], double walls[3])
@@ -599,6 +763,10 @@ void coupling_free(coupling *c)
     cpl_vf_free(&c->vf);
     cpl_mesh_free(&c->mesh);
     dem_system_free(&c->s);
+    cpl_proxies_free(&c->pr);
+    free(c->copy_x); free(c->copy_r); free(c->copy_volume); free(c->copy_cell); free(c->copy_z);
+    free(c->copy_norm); free(c->copy_found); free(c->copy_beta); free(c->copy_f); free(c->copy_v);
+    free(c->copy_buf); free(c->particle_buf); free(c->reach);
     free(c->d); free(c->volume); free(c->alpha_p); free(c->u_p); free(c->gp_p);
     free(c->ksl); free(c->up); free(c->source);
     free(c);

@@ -66,7 +66,7 @@ const double (*coupling_particle_velocity(const coupling *c))[3];
 const double (*coupling_explicit_source(const coupling *c))[3];
 enum cpl_model_type coupling_model_type(const coupling *c);
 int coupling_interval(const coupling *c);       /* DEM steps per fluid step */
-int coupling_particle_count(const coupling *c);
+long coupling_particle_count(const coupling *c);   /* over all ranks */
 /* Mean particle velocity [m/s] and position [m] (for the tutorials' checks and the log). */
 void coupling_particle_means(const coupling *c, double v[3], double x[3]);
 /* The fluid's and the walls' force on all particles [N], each the mean over the last fluid

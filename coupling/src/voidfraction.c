@@ -92,35 +92,47 @@ static void push(cpl_voidfraction *vf, int *nw, int cell, double w)
 
 /* divided: each sample point's share to its own cell; points beyond a cyclic side are located
  * on the other side (cpl_mesh_locate wraps them), points outside the mesh (beyond a wall)
- * dropped and the rest renormalised. */
-static void weights_divided(cpl_voidfraction *vf, const cpl_mesh *m, const double x[3], double r, int c, int *nw)
+ * dropped and the rest renormalised (by cpl_vf_finish: the points found on every rank). Unscaled
+ * here: one per point found. c < 0 (the centre on another rank's cells): the points are sought
+ * from scratch, and those found here are this rank's share. Returns the sum of the weights. */
+static double weights_divided(cpl_voidfraction *vf, const cpl_mesh *m, const double x[3], double r, int c, int *nw)
 {
     /* the whole sphere inside the cell (the common case of particles smaller than cells): every
      * point would be found there, skip locating them */
-    if (cpl_mesh_depth(m, c, x) >= r) { push(vf, nw, c, 1.0); return; }
+    if (c >= 0 && cpl_mesh_depth(m, c, x) >= r) { push(vf, nw, c, 1.0); return 1.0; }
     const int first = *nw;
-    int inside = 0;
+    int inside = 0, guess = c;
     for (int k = 0; k < vf->nsample; k++) {
         double xs[3];
         for (int d = 0; d < 3; d++) xs[d] = x[d] + r * vf->sample[k][d];
-        const int cs = cpl_mesh_locate(m, xs, c, NULL);
+        if (c < 0) {   /* sought only where this rank's cells are */
+            int near = 1;
+            for (int d = 0; d < 3; d++)
+                if (!m->periodic[d] && (xs[d] < m->bounds_min[d] || xs[d] > m->bounds_max[d])) near = 0;
+            if (!near) continue;
+        }
+        const int cs = cpl_mesh_locate(m, xs, guess, NULL);
         if (cs < 0) continue;
+        if (c < 0) guess = cs;
         inside++;
         int j = first;
         while (j < *nw && vf->w_cell[j] != cs) j++;
         if (j < *nw) vf->w[j] += 1.0;
         else push(vf, nw, cs, 1.0);
     }
-    if (inside == 0) { push(vf, nw, c, 1.0); return; }   /* only the centre is in the mesh */
-    for (int j = first; j < *nw; j++) vf->w[j] /= inside;
+    /* only the centre is in the mesh: the whole volume there (weight 0 now; cpl_vf_finish makes it
+     * 1 when no rank found a point) */
+    if (inside == 0 && c >= 0) push(vf, nw, c, 0.0);
+    return inside;
 }
 
 /* gaussian: breadth-first through faces from the particle's cell, over cells whose centres are
  * within the cutoff; weights V_c exp(-d^2 / 2 s^2) (the kernel times the cell's volume: the
- * kernel's integral over the cell), normalised over the cells found. Across a cyclic face the
+ * kernel's integral over the cell), normalised over the cells found (cpl_vf_finish; the sum is
+ * returned). Across a cyclic face the
  * search goes on in the cells of the other side, each at its centre shifted by the period (the
  * shift travels with the queue), so the kernel sees the periodic image of the mesh. */
-static void weights_gaussian(cpl_voidfraction *vf, const cpl_mesh *m, const double x[3], double r, int c, int *nw)
+static double weights_gaussian(cpl_voidfraction *vf, const cpl_mesh *m, const double x[3], double r, int c, int *nw)
 {
     const double s = vf->kernel_width * 2.0 * r, cut = vf->kernel_cutoff * s;
     for (int d = 0; d < 3; d++)   /* one image of each cell within the cutoff */
@@ -168,7 +180,7 @@ static void weights_gaussian(cpl_voidfraction *vf, const cpl_mesh *m, const doub
         vf->w[j] = m->cell_volume[vf->w_cell[j]] * exp(-(vf->w[j] - d2min) / (2.0 * s * s));
         sum += vf->w[j];
     }
-    for (int j = first; j < *nw; j++) vf->w[j] /= sum;
+    return sum;
 }
 
 int cpl_vf_compute(cpl_voidfraction *vf, const cpl_mesh *m, int np, const double (*x)[3],
@@ -179,6 +191,22 @@ int cpl_vf_compute(cpl_voidfraction *vf, const cpl_mesh *m, int np, const double
 
 int cpl_vf_compute_volumes(cpl_voidfraction *vf, const cpl_mesh *m, int np, const double (*x)[3],
                            const double *r, const double *volume, int *cell)
+{
+    double *z = dem_malloc(((size_t)np + 1) * sizeof *z), *found = dem_malloc(((size_t)np + 1) * sizeof *found);
+    cpl_vf_weigh(vf, m, np, x, r, cell, z);
+    int outside = 0;
+    for (int i = 0; i < np; i++) {
+        found[i] = cell[i] >= 0;
+        outside += cell[i] < 0;
+    }
+    cpl_vf_finish(vf, m, z, found, r, volume);
+    free(z);
+    free(found);
+    return outside;
+}
+
+void cpl_vf_weigh(cpl_voidfraction *vf, const cpl_mesh *m, int np, const double (*x)[3], const double *r, int *cell,
+                  double *z)
 {
     if (np < 0 || m->ncells != vf->ncells)
         dem_fatal("void fraction: %d particles, mesh of %d cells (set up for %d)", np, m->ncells, vf->ncells);
@@ -191,30 +219,48 @@ int cpl_vf_compute_volumes(cpl_voidfraction *vf, const cpl_mesh *m, int np, cons
     if (vf->model == CPL_VF_GAUSSIAN && !(vf->kernel_width > 0 && vf->kernel_cutoff > 0))
         dem_fatal("gaussian void fraction: kernel width %g and cutoff %g must be positive", vf->kernel_width,
                   vf->kernel_cutoff);
-    int nw = 0, outside = 0;
+    int nw = 0;
     vf->np = np;
     for (int i = 0; i < np; i++) {
         vf->w_start[i] = nw;
+        z[i] = 0.0;
         const int guess = cell[i] >= 0 && cell[i] < m->ncells ? cell[i] : -1;
         double xi[3] = {x[i][0], x[i][1], x[i][2]};
         cpl_mesh_wrap(m, xi);   /* the image in the mesh, if a cyclic side was crossed */
         const int c = cpl_mesh_locate(m, xi, guess, NULL);
         cell[i] = c;
-        if (c < 0) { outside++; continue; }
         switch (vf->model) {
-        case CPL_VF_CENTRE: push(vf, &nw, c, 1.0); break;
-        case CPL_VF_DIVIDED: weights_divided(vf, m, xi, r[i], c, &nw); break;
-        case CPL_VF_GAUSSIAN: weights_gaussian(vf, m, xi, r[i], c, &nw); break;
+        case CPL_VF_CENTRE:
+            if (c >= 0) { push(vf, &nw, c, 1.0); z[i] = 1.0; }
+            break;
+        case CPL_VF_DIVIDED:
+            if (c >= 0 || vf->partial) z[i] = weights_divided(vf, m, xi, r[i], c, &nw);
+            break;
+        case CPL_VF_GAUSSIAN:
+            if (c >= 0) z[i] = weights_gaussian(vf, m, xi, r[i], c, &nw);
+            break;
         }
     }
     vf->w_start[np] = nw;
+}
+
+void cpl_vf_finish(cpl_voidfraction *vf, const cpl_mesh *m, const double *norm, const double *found, const double *r,
+                   const double *volume)
+{
+    const int np = vf->np;
+    for (int i = 0; i < np; i++) {
+        for (int k = vf->w_start[i]; k < vf->w_start[i + 1]; k++) {
+            if (!(found[i] > 0)) vf->w[k] = 0.0;           /* the centre outside the mesh: not mapped */
+            else if (norm[i] > 0) vf->w[k] /= norm[i];
+            else vf->w[k] = 1.0;                           /* divided: only the centre was found */
+        }
+    }
     memset(vf->vp, 0, vf->ncells * sizeof(double));
     for (int i = 0; i < np; i++) {
         const double vol = volume ? volume[i] : 4.0 / 3.0 * M_PI * r[i] * r[i] * r[i];
         for (int k = vf->w_start[i]; k < vf->w_start[i + 1]; k++) vf->vp[vf->w_cell[k]] += vf->w[k] * vol;
     }
     for (int c = 0; c < vf->ncells; c++) vf->alpha[c] = fmax(vf->alpha_min, 1.0 - vf->vp[c] / m->cell_volume[c]);
-    return outside;
 }
 
 void cpl_vf_spread(const cpl_voidfraction *vf, int ncomp, const double *q, double *out)

@@ -47,6 +47,10 @@ typedef struct cpl_voidfraction {
     int *w_start, *w_cell;
     double *w;
 
+    /* 1 when the cells are one rank's share of the mesh (proxies.h): the divided model then
+     * seeks the sample points of particles whose centre is on another rank's cells */
+    int partial;
+
     /* private work space */
     int np_cap, w_cap;
     unsigned *mark, stamp;
@@ -78,6 +82,21 @@ int cpl_vf_compute(cpl_voidfraction *vf, const cpl_mesh *m, int np, const double
  * volume goes (the divided and gaussian models). */
 int cpl_vf_compute_volumes(cpl_voidfraction *vf, const cpl_mesh *m, int np, const double (*x)[3],
                            const double *r, const double *volume, int *cell);
+
+/* cpl_vf_compute_volumes in two halves, for a mesh cut over ranks, where a particle's weights
+ * are found on each rank that holds some of its cells and normalised by their sum over the ranks
+ * (proxies.h); serially cpl_vf_compute_volumes calls them in turn.
+ * weigh: each particle's cells among this rank's and its unnormalised weights (centre: 1;
+ * divided: one per sample point found; gaussian: V_c times the kernel); cell[i] updated (-1: the
+ * centre is not in these cells); z[i] = the sum of its weights here.
+ * finish: with norm[i] the sum of z over the ranks and found[i] > 0 where some rank holds the
+ * centre: the weights divided by norm (a particle whose centre no rank holds is not mapped; a
+ * divided particle of which no point but the centre was found goes whole into the centre's
+ * cell), then vp and alpha. */
+void cpl_vf_weigh(cpl_voidfraction *vf, const cpl_mesh *m, int np, const double (*x)[3], const double *r, int *cell,
+                  double *z);
+void cpl_vf_finish(cpl_voidfraction *vf, const cpl_mesh *m, const double *norm, const double *found, const double *r,
+                   const double *volume);
 
 /* out[c][k] = sum over particles i of w_ic q[i][k] (q: [np][ncomp], out: [ncells][ncomp],
  * overwritten), with the weights of the last cpl_vf_compute. Sums, not densities: divide by the

@@ -118,3 +118,5 @@ void dem_mpi_release(void)
     dem_io_set_parallel_hook(NULL);
     if (dem_comm != MPI_COMM_NULL) MPI_Comm_free(&dem_comm);
 }
+
+void dem_mpi_use_world(void) { dem_mpi_use(MPI_COMM_WORLD); }

@@ -10,6 +10,8 @@
 /* Route reduce.h's reductions through MPI_Allreduce and comm.h's messages through point-to-point
  * sends over comm (duplicated: the DEM's messages never meet the program's). */
 void dem_mpi_use(MPI_Comm comm);
+/* dem_mpi_use(MPI_COMM_WORLD), for programs that do not include mpi.h (dem_mpi_world.h). */
+void dem_mpi_use_world(void);
 /* A fatal error (error.h) prints its message once, on the rank that met it, and ends every rank
  * (MPI_Abort); for programs that own MPI (demRun). */
 void dem_mpi_set_fatal_abort(void);

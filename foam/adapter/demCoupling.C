@@ -9,9 +9,11 @@
 
 #include <cstdlib>
 #include <type_traits>
+#include <unistd.h>
 
 #include "coupling.h"       // C API (extern "C"), coupling/src
 #include "error.h"          // the C libraries' fatal handler and logger, dem/src
+#include "dem_mpi_world.h"  // the C libraries' messages over MPI (dem/mpi), for -parallel
 
 // The arrays go across without conversion: label must be a C int and a vector three packed doubles
 static_assert(sizeof(Foam::label) == sizeof(int), "label must be int32 (WM_LABEL_SIZE=32)");
@@ -32,6 +34,12 @@ namespace
     // stops the program even where FatalError was set to throw.
     void raiseFatalError(const char* where, const char* message)
     {
+        // -parallel: an error every rank meets (the input) is said once, by the master, whose
+        // abort ends the others during their wait; an error of one rank alone after it
+        if (Foam::Pstream::parRun() && !Foam::Pstream::master())
+        {
+            sleep(2);
+        }
         Foam::FatalError.throwExceptions(false);
         Foam::OSstream& os = FatalErrorInFunction;
         if (where)
@@ -95,15 +103,15 @@ Foam::demCoupling::demCoupling
     adapterTime_(0),
     clock_()
 {
-    if (Pstream::parRun())
-    {
-        FatalErrorInFunction
-            << "The DEM coupling runs in one process (the C layer holds the whole mesh and"
-            << " all particles); run without -parallel." << exit(FatalError);
-    }
-
     previousFatalHandler = dem_set_fatal_handler(raiseFatalError);
     previousLogger = dem_set_logger(writeLog);
+
+    // -parallel: this rank's cells go to the C side, the DEM is decomposed over the same ranks
+    // and the particles' copies go to the ranks whose cells they reach (coupling/src/proxies.h)
+    if (Pstream::parRun())
+    {
+        dem_mpi_use_world();
+    }
 
     // --- the mesh arrays, as OpenFOAM orders them (internal faces first)
     const pointField& pts = mesh.points();
@@ -153,7 +161,7 @@ Foam::demCoupling::demCoupling
 
     Info<< "demCoupling: mesh copied to the coupling layer: " << pts.size() << " points, "
         << nFaces << " faces (" << nei.size() << " internal), " << mesh.nCells()
-        << " cells" << nl;
+        << " cells" << (Pstream::parRun() ? " on the master; each rank copies its own" : "") << nl;
 
     // Cyclic patches: OpenFOAM pairs face i of a cyclic patch with face i of its neighbour
     // patch; the C side takes the pairs (a translation along one axis, checked there) and sees
@@ -182,7 +190,8 @@ Foam::demCoupling::demCoupling
             << cpp.size() << " face pairs" << nl;
     }
 
-    const fileName caseDir(mesh.time().path());
+    // the case itself (not processorN): demProperties, particles.h5, postProcessing
+    const fileName caseDir(mesh.time().globalPath());
     session_ = coupling_create(caseDir.c_str(), m, rho, nu, deltaT, startTime);
 
     modelA_ = (coupling_model_type(session_) == CPL_MODEL_A);
@@ -203,6 +212,10 @@ Foam::demCoupling::~demCoupling()
         coupling_free(session_);
     }
     std::free(cmesh_);
+    if (Pstream::parRun())
+    {
+        dem_mpi_release();
+    }
     dem_set_fatal_handler(previousFatalHandler);
     dem_set_logger(previousLogger);
 }
