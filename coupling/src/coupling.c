@@ -434,7 +434,8 @@ static void open_means(coupling *c, const char *path)
                                  "(both the mean over the fluid step's DEM steps)\n";
     char *kept = NULL;
     size_t nkept = 0;
-    FILE *old = c->restarted ? fopen(path, "r") : NULL;
+    const int writer = dem_comm_rank() == 0;   /* rank 0 writes; the sums are taken on every rank */
+    FILE *old = c->restarted && writer ? fopen(path, "r") : NULL;
     if (old) {
         char line[1024];
         size_t cap = 0;
@@ -453,9 +454,10 @@ static void open_means(coupling *c, const char *path)
         }
         fclose(old);
     }
-    if (dem_comm_rank() != 0) {   /* the sums are taken on every rank, written by rank 0 */
-        free(kept);
-        if (!nkept) write_means(c);
+    int64_t fresh = writer && !nkept;   /* the first line now: rank 0 knows, every rank sums */
+    dem_reduce_int64s(&fresh, 1, DEM_REDUCE_MAX);
+    if (!writer) {
+        if (fresh) write_means(c);
         return;
     }
     c->means = fopen(path, "w");
@@ -468,7 +470,7 @@ static void open_means(coupling *c, const char *path)
     }
     if (nkept) fputs(kept, c->means);
     free(kept);
-    if (!nkept) write_means(c);
+    if (fresh) write_means(c);
     else fflush(c->means);
 }
 
@@ -498,7 +500,11 @@ static void setup_particles(coupling *c, const char *case_dir, double t_start)
                       "snapshot)", base, t_start);
         /* the DEM keeps its own clock (the snapshot's, within half a step of t_start) */
         c->exchanged = saved.coupling_read;   /* what the fluid of t_start received */
-        const int dropped = dem_io_drop_snapshots_after(base, c->s.time);
+        /* rank 0 drops them once every rank has read the snapshot, and the writer opens the file
+         * after that (dem_reduce_any: the ranks wait for each other) */
+        dem_reduce_any(0);
+        const int dropped = dem_comm_rank() == 0 ? dem_io_drop_snapshots_after(base, c->s.time) : 0;
+        dem_reduce_any(0);
         dem_info("coupling: continuing from %s.h5 at t = %g s (DEM step %ld), %d particles%s", base, c->s.time,
                  c->s.step, c->s.p.n, dropped ? "; later snapshots dropped" : "");
     }

@@ -63,18 +63,36 @@ EOF
     fi
 }
 
-run_solver() {
-    local solver=$1 axis=$2
+# decompose_case <axis>: system/decomposeParDict and decomposePar (NP > 1)
+decompose_case() {
+    export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+    write_decompose_dict "$1"
+    rm -rf processor*
+    decomposePar -force > log.decomposePar 2>&1 || { tail -20 log.decomposePar; exit 1; }
+}
+
+# parallel_solver <solver>: the solver on NP ranks (mpirun ... -parallel) or, for NP = 1, alone;
+# its output to stdout
+parallel_solver() {
     if [ "$NP" -eq 1 ]; then
-        "$solver" > log.voidPimpleFoam 2>&1 || { tail -30 log.voidPimpleFoam; exit 1; }
+        "$1"
         return
     fi
     export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
     local over=()
     [ "$NP" -gt "$(nproc)" ] && over=(--oversubscribe)
-    write_decompose_dict "$axis"
-    rm -rf processor*
-    decomposePar -force > log.decomposePar 2>&1 || { tail -20 log.decomposePar; exit 1; }
-    mpirun "${over[@]}" -np "$NP" "$solver" -parallel > log.voidPimpleFoam 2>&1 || { tail -30 log.voidPimpleFoam; exit 1; }
+    mpirun "${over[@]}" -np "$NP" "$1" -parallel
+}
+
+# reconstruct_case: the fields of the new times into the case's time directories (NP > 1)
+reconstruct_case() {
     reconstructPar -newTimes > log.reconstructPar 2>&1 || { tail -20 log.reconstructPar; exit 1; }
+}
+
+# run_solver <solver> <axis>: decompose, run, reconstruct; the solver's output in log.voidPimpleFoam
+run_solver() {
+    [ "$NP" -gt 1 ] && decompose_case "$2"
+    parallel_solver "$1" > log.voidPimpleFoam 2>&1 || { tail -30 log.voidPimpleFoam; exit 1; }
+    [ "$NP" -gt 1 ] && reconstruct_case
+    return 0
 }
