@@ -58,6 +58,9 @@ enum { CPL_STAGES(CPL_STAGE_ID) CPL_STAGE_COUNT, CPL_STAGE_DEM = -1 };
 static const char *const cpl_stage_names[CPL_STAGE_COUNT] = {CPL_STAGES(CPL_STAGE_TEXT)};
 #undef CPL_STAGE_TEXT
 
+#define CPL_ROW_DOUBLES 31   /* doubles moved per particle copy and fluid step (update_void_fraction,
+                                evaluate_forces twice, spread_forces) */
+
 struct coupling {
     char case_dir[4096];
     dem_system s;
@@ -81,6 +84,7 @@ struct coupling {
     double *copy_buf, *particle_buf;   /* the moves' rows: [copies][8], [particles][8] */
     double *reach;                 /* [particles] how far from its centre a particle's volume may fall [m] */
     long fluid_steps;
+    double allgather_bytes;        /* what an all-gather of every particle's rows would have sent [B] */
     int tets_valid, field_set;
     long tets_generation, vf_generation;   /* the particles' generation (particles.h) they were made for */
     cpl_force_params params;
@@ -664,6 +668,9 @@ void coupling_evolve(coupling *c, const double (*U)[3], const double (*grad_p)[3
         if (c->s.nwalls) dem_reduce_doubles(&c->each_wall[0][0], 3 * c->s.nwalls, DEM_REDUCE_SUM);
     }
     c->fluid_steps++;
+    /* the rows a fluid step moves per copy: 6 + 1 + 1 + 2 (void fraction), 7 + 7 (the two
+     * gathers), 7 (the forces): an all-gather sends each particle's to every other rank */
+    c->allgather_bytes += (double)c->s.p.n * CPL_ROW_DOUBLES * sizeof(double) * (c->pr.size - 1);
     dem_system_check_health(&c->s);
     lap(c, CPL_STAGE_DEM, &t);
     update_void_fraction(c);                            /* 3 */
@@ -744,6 +751,24 @@ void coupling_timings(const coupling *c, double *dem_s, double *coupling_s, doub
     *lifecycle_s = c->s.stage_seconds[DEM_STAGE_LIFECYCLE] + c->s.stage_seconds[DEM_STAGE_LIST_LIFECYCLE];
 }
 
+/* The bytes each rank sent per fluid step: the coupling's copies, the DEM's halo and migration,
+ * and what an all-gather of every particle's coupling rows (CFDEMcoupling's twoWayMPI) would have
+ * sent (issue 23). */
+static void report_exchange(coupling *c)
+{
+    const double steps = c->fluid_steps > 0 ? (double)c->fluid_steps : 1.0;
+    double mine[3] = {c->pr.bytes_sent, dem_comm_bytes_sent() - c->pr.bytes_sent, c->allgather_bytes};
+    double most[3] = {mine[0], mine[1], mine[2]};
+    dem_reduce_doubles(mine, 3, DEM_REDUCE_SUM);
+    dem_reduce_doubles(most, 3, DEM_REDUCE_MAX);
+    const double n = c->pr.size;
+    dem_info("Bytes sent per rank per fluid step (mean over the %d ranks, the most on one): coupling copies %.4g B "
+             "(%.4g B), the DEM's halo and migration %.4g B (%.4g B); an all-gather of every particle's %d coupling "
+             "numbers would send %.4g B (%.4g B): the copies are %.2g %% of it", c->pr.size, mine[0] / n / steps,
+             most[0] / steps, mine[1] / n / steps, most[1] / steps, CPL_ROW_DOUBLES, mine[2] / n / steps,
+             most[2] / steps, mine[2] > 0 ? 100.0 * mine[0] / mine[2] : 0.0);
+}
+
 void coupling_report_timings(coupling *c)
 {
     const double total = coupling_seconds(c);
@@ -755,6 +780,7 @@ void coupling_report_timings(coupling *c)
                  total > 0 ? 100 * c->stage_seconds[k] / total : 0.0,
                  fluid_steps > 0 ? 1e6 * c->stage_seconds[k] / fluid_steps : 0.0);
     dem_stage_report(&c->s, c->dem_steps);
+    if (c->pr.size > 1) report_exchange(c);
 }
 
 void coupling_free(coupling *c)

@@ -41,3 +41,15 @@ foreach(np 1 2 4)
   set_tests_properties(dem_parallel_${np} PROPERTIES
                        ENVIRONMENT "OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1")
 endforeach()
+# The coupling's copies on the fluid's ranks (issue 23): a mesh cut into slabs, one per rank, and
+# particles owned by ranks unrelated to where they are; the void fraction (divided: spheres
+# straddling the cuts; centre), the gather and the spreading equal the whole mesh's to 1e-12.
+add_executable(test_coupling_parallel ${CMAKE_CURRENT_SOURCE_DIR}/mpi/test_coupling_parallel.c)
+target_include_directories(test_coupling_parallel PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/validation)
+target_link_libraries(test_coupling_parallel coupling dem_mpi)
+foreach(np 1 2 4)
+  add_test(NAME coupling_parallel_${np}
+           COMMAND ${MPIEXEC_EXECUTABLE} ${MPIEXEC_NUMPROC_FLAG} ${np} --oversubscribe $<TARGET_FILE:test_coupling_parallel>)
+  set_tests_properties(coupling_parallel_${np} PROPERTIES
+                       ENVIRONMENT "OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1")
+endforeach()
