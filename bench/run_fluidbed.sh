@@ -3,7 +3,7 @@
 # our tutorials/fluidisedBed (the same bed in voidPimpleFoam + our DEM), and pimpleFoam on the same
 # mesh, one after the other in this script, each serially on one core.
 #
-# usage: bench/run_fluidbed.sh [--time T] [--skip-dpmfoam] [--no-cellpoint]
+# usage: bench/run_fluidbed.sh [--time T] [--skip-dpmfoam] [--no-cellpoint] [--skip-pimplefoam] [--np N]
 #
 #   DPMFoam:   a copy of /usr/share/doc/openfoam-examples/examples/lagrangian/DPMFoam/Goldschmidt
 #              as shipped (deltaT 2e-5 s, its 24,750 parcels from kinematicCloudPositions), run
@@ -15,6 +15,12 @@
 #   pimpleFoam: the same mesh, fvSchemes and fvSolution (the same correctors, no momentum
 #              predictor, as the face form), no particles, the inlet at 1.875 m/s, the fluid
 #              deltaT of ours: the cost of a fluid step without particles.
+#   --np N:    ours again on N ranks (issue 23: decomposePar cutting the column across its height,
+#              simple; AXIS=x|y|z and DECOMPOSE=simple|hierarchical|manual change that),
+#              mpirun -np N voidPimpleFoam -parallel, and its speed-up over the serial run of the
+#              same case, wall and CPU, per part; the bytes each rank sent per fluid step. (Cut
+#              across the width, y, the gas's 5,400 cells scaled 1.41x on 2 ranks against 1.94x
+#              cut across the height: a processor patch of 180 faces against 60.)
 # Each under /usr/bin/time -f: wall and CPU (user + system) seconds. The machine is shared and
 # noisy; the ratios are what the script is for.
 # Output: RESULT lines, then the ratios DPMFoam/ours (wall and CPU per simulated second), ours'
@@ -24,12 +30,14 @@ set -euo pipefail
 
 here=$(cd "$(dirname "$0")" && pwd)
 repo=$(cd "$here/.." && pwd)
-T=0.05; do_dpm=1; do_cellpoint=1
+T=0.05; do_dpm=1; do_cellpoint=1; do_pimple=1; np=1
 while [ $# -gt 0 ]; do
     case "$1" in
         --time) T="$2"; shift ;;
         --skip-dpmfoam) do_dpm=0 ;;
         --no-cellpoint) do_cellpoint=0 ;;
+        --skip-pimplefoam) do_pimple=0 ;;
+        --np) np="$2"; [[ "$np" =~ ^[1-9][0-9]*$ ]] || { echo "run_fluidbed.sh: --np needs a rank count" >&2; exit 2; }; shift ;;
         -h|--help) awk 'NR > 1 && !/^#/ { exit } NR > 1' "$0"; exit 0 ;;
         *) echo "run_fluidbed.sh: unknown argument '$1'" >&2; exit 2 ;;
     esac
@@ -94,6 +102,20 @@ timed ours "$work/ours" "$solver"
 read -r dem cpl fluid total <<< "$(split "$work/ours")"
 nfluid=$(awk '/^Time split over/ { print $4 }' "$work/ours/log.run")
 printf "RESULT ours_split DEM_s %.1f coupling_s %.1f fluid_s %.1f total_s %.1f fluid_steps %d\n" "$dem" "$cpl" "$fluid" "$total" "$nfluid"
+if [ "$np" -gt 1 ]; then
+    ours_case "$work/ours_np$np" cell
+    (cd "$work/ours_np$np" && source "$repo/tutorials/tools/parallel.sh" && NP=$np DECOMPOSE=${DECOMPOSE:-simple} && decompose_case "${AXIS:-z}")
+    over=(); [ "$np" -gt "$(nproc)" ] && over=(--oversubscribe)
+    OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 timed "ours_np$np" "$work/ours_np$np" mpirun "${over[@]}" -np "$np" "$solver" -parallel
+    read -r dem_p cpl_p fluid_p total_p <<< "$(split "$work/ours_np$np")"
+    printf "RESULT ours_np%d_split DEM_s %.1f coupling_s %.1f fluid_s %.1f total_s %.1f\n" "$np" "$dem_p" "$cpl_p" "$fluid_p" "$total_p"
+    grep "^Bytes sent per rank" "$work/ours_np$np/log.run" | sed 's/^/RESULT /'
+    awk -v w1="$(secs "$work/ours" wall)" -v wn="$(secs "$work/ours_np$np" wall)" -v c1="$(secs "$work/ours" cpu)" \
+        -v cn="$(secs "$work/ours_np$np" cpu)" -v n="$np" -v d1="$dem" -v dn="$dem_p" -v f1="$fluid" -v fn="$fluid_p" \
+        -v k1="$cpl" -v kn="$cpl_p" 'BEGIN {
+        printf "RESULT speedup_np%d wall %.2f (serial %.1f s, %d ranks %.1f s), CPU per rank %.2f; DEM %.2f, coupling %.2f, fluid %.2f\n",
+               n, w1 / wn, w1, n, wn, c1 / (cn / n), d1 / dn, k1 / kn, f1 / fn }'
+fi
 if [ $do_cellpoint = 1 ]; then
     ours_case "$work/ours_cellPoint" cellPoint
     timed ours_cellPoint "$work/ours_cellPoint" "$solver"
@@ -101,6 +123,7 @@ if [ $do_cellpoint = 1 ]; then
     printf "RESULT ours_cellPoint_split DEM_s %.1f coupling_s %.1f fluid_s %.1f total_s %.1f\n" "$dem_cp" "$cpl_cp" "$fluid_cp" "$total_cp"
 fi
 
+if [ $do_pimple = 1 ]; then
 # --- pimpleFoam on the same mesh, no particles
 mkdir -p "$work/pimple/constant"
 cp -r "$repo"/tutorials/fluidisedBed/{0,system} "$work/pimple"/
@@ -131,11 +154,12 @@ timed pimpleFoam "$work/pimple" pimpleFoam
 # pimpleFoam's cost per step from its own clock (ExecutionTime, CPU), first to last step, so that
 # its start-up is not counted (ours' fluid time excludes start-up too)
 pimple_step=$(awk '/^ExecutionTime/ { n++; t = $3; if (n == 1) t1 = $3 } END { print (n > 1 ? (t - t1) / (n - 1) : t) }' "$work/pimple/log.run")
+fi
 
 # --- ratios
 awk -v d="$dem" -v c="$cpl" -v f="$fluid" -v t="$total" 'BEGIN {
     printf "RESULT ours_split_percent DEM %.1f coupling %.1f fluid %.1f\n", 100 * d / t, 100 * c / t, 100 * f / t }'
-awk -v f="$fluid" -v n="$nfluid" -v p="$pimple_step" 'BEGIN {
+[ $do_pimple = 1 ] && awk -v f="$fluid" -v n="$nfluid" -v p="$pimple_step" 'BEGIN {
     printf "RESULT fluid_step_ms ours %.2f pimpleFoam %.2f ratio_ours_over_pimpleFoam %.2f\n", 1e3 * f / n, 1e3 * p, (f / n) / p }'
 if [ $do_cellpoint = 1 ]; then
     awk -v a="$cpl_cp" -v b="$cpl" 'BEGIN { printf "RESULT coupling_cellPoint_over_cell %.2f (%.2f s / %.2f s)\n", a / b, a, b }'
