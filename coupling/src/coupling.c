@@ -544,8 +544,9 @@ static void check_periodic_sides(const coupling *c)
 
 /* What the parallel coupling does not do yet (issue 23): each says so and stops. The centre and
  * divided void fractions and the cell interpolation need nothing beyond a rank's own cells and
- * the particles' copies; the gaussian kernel's walk through faces, the interpolation's
- * neighbours and the cyclic pairs would need the cells across processor patches. */
+ * the particles' copies (cyclic pairs within a rank included: the adapter refuses a cut across
+ * them); the gaussian kernel's walk through faces and the interpolation's neighbours would need
+ * the cells across processor patches. */
 static void refuse_in_parallel(const coupling *c, enum cpl_vf_model vf_model)
 {
     char path[4200];
@@ -556,8 +557,6 @@ static void refuse_in_parallel(const coupling *c, enum cpl_vf_model vf_model)
     if (c->interp_scheme != CPL_INTERP_CELL)
         dem_fatal_at(path, "interpolation %s runs in one process only, not yet with -parallel (it needs the cells "
                      "across processor patches): use interpolation cell, or run serially", interp_names_of(c->interp_scheme));
-    if (c->mesh.cyclic_partner || c->s.periodic[0] || c->s.periodic[1] || c->s.periodic[2])
-        dem_fatal("coupling: a periodic case (cyclic patches) runs in one process only, not yet with -parallel");
     if (c->s.bodies.n)
         dem_fatal("coupling: multisphere bodies run in one process only, not yet with -parallel");
 }

@@ -6,6 +6,7 @@
 #include "fvc.H"
 #include "Pstream.H"
 #include "cyclicPolyPatch.H"
+#include "processorCyclicPolyPatch.H"
 
 #include <cstdlib>
 #include <type_traits>
@@ -166,6 +167,20 @@ Foam::demCoupling::demCoupling
     // Cyclic patches: OpenFOAM pairs face i of a cyclic patch with face i of its neighbour
     // patch; the C side takes the pairs (a translation along one axis, checked there) and sees
     // across them as across interior faces.
+    // -parallel: a cyclic pair whose sides sit on two ranks (decomposePar made a
+    // processorCyclic patch of it): the C side sees cyclic pairs within a rank only
+    forAll(mesh.boundaryMesh(), patchi)
+    {
+        const polyPatch& pp = mesh.boundaryMesh()[patchi];
+        if (isA<processorCyclicPolyPatch>(pp))
+        {
+            FatalErrorInFunction
+                << "the decomposition cuts across a cyclic direction (processor patch " << pp.name()
+                << "): each rank must hold both sides of every cyclic pair; in system/decomposeParDict"
+                << " cut along the other directions only (simple or hierarchical n = 1 along the"
+                << " periodic axis)" << exit(FatalError);
+        }
+    }
     forAll(mesh.boundaryMesh(), patchi)
     {
         const polyPatch& pp = mesh.boundaryMesh()[patchi];

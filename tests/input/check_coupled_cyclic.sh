@@ -1,5 +1,5 @@
 #!/bin/bash
-# Cyclic sides in a coupled run (issue 21): the settling box of tutorials/settling made periodic
+# Cyclic sides in a coupled run (issue 21; in parallel, issue 23): the settling box of tutorials/settling made periodic
 # in x (cyclic patches left/right for the gas, domain periodic in x for the particles), 40
 # spheres (d = 1 mm, divided void fraction, cellPoint interpolation) launched at 0.3 m/s along x,
 # so that they cross the cyclic sides while they settle. Checks:
@@ -68,12 +68,8 @@ PY
     cd - > /dev/null
 }
 
-make_case "$work/channel"
-( cd "$work/channel" && "$solver" > log.voidPimpleFoam 2>&1 ) || { tail -30 "$work/channel/log.voidPimpleFoam"; exit 1; }
-log=$work/channel/log.voidPimpleFoam
-check "the solver took the cyclic pairs (left and right: 80 face pairs)" \
-    "$(grep -c 'cyclic patches left and right: 80 face pairs' "$log" | awk '{print ($1 == 1)}')"
-/usr/bin/python3 - "$work/channel" <<'PY' || fail=1
+check_mapped() {   # check_mapped <case>: the volume at every write time, particles wrapped
+/usr/bin/python3 - "$1" <<'PY' || fail=1
 import sys, os, re, glob, h5py, numpy as np
 case = sys.argv[1]
 def field(path):
@@ -101,10 +97,44 @@ ok = worst < 1e-9 and crossed > 5 and len(times) >= 5
 print(f"CHECK the particles' volume mapped in full at every write (1e-9) and particles crossed {'PASS' if ok else 'FAIL'}")
 sys.exit(0 if ok else 1)
 PY
+}
+
+make_case "$work/channel"
+( cd "$work/channel" && "$solver" > log.voidPimpleFoam 2>&1 ) || { tail -30 "$work/channel/log.voidPimpleFoam"; exit 1; }
+log=$work/channel/log.voidPimpleFoam
+check "the solver took the cyclic pairs (left and right: 80 face pairs)" \
+    "$(grep -c 'cyclic patches left and right: 80 face pairs' "$log" | awk '{print ($1 == 1)}')"
+check_mapped "$work/channel"
 # column 9: |residual| / the largest term of the balance, each step (tutorials/tools/foamcase.py)
 resid=$(awk '!/^#/ && NF >= 9 {r = $9 < 0 ? -$9 : $9; if (r > m) m = r} END {print m + 0}' "$work/channel/postProcessing/momentumBalance.dat")
 check "the gas momentum balance within 1 % at every step (largest relative residual $resid)" \
     "$(awk -v r="$resid" 'BEGIN {print (r < 0.01)}')"
+
+# In parallel (issue 23): the same channel on 2 ranks cut across its height (each rank holds both
+# cyclic sides; the cell interpolation, as -parallel takes), the same checks on the reconstructed
+# case; cut across the cyclic direction it is refused with a message naming the cut.
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+decompose() {   # decompose <case> <n>
+    printf 'FoamFile { version 2.0; format ascii; class dictionary; object decomposeParDict; }\nnumberOfSubdomains 2;\nmethod simple;\nsimpleCoeffs { n %s; delta 0.001; }\n' "$2" > "$1/system/decomposeParDict"
+    ( cd "$1" && decomposePar -force > log.decomposePar 2>&1 ) || { tail -20 "$1/log.decomposePar"; exit 1; }
+}
+make_case "$work/parallel"
+sed -i 's/^interpolation .*/interpolation cell;/' "$work/parallel/constant/couplingProperties"
+decompose "$work/parallel" "(1 1 2)"
+( cd "$work/parallel" && mpirun -np 2 "$solver" -parallel > log.voidPimpleFoam 2>&1 && reconstructPar > log.reconstructPar 2>&1 ) \
+    || { tail -30 "$work/parallel/log.voidPimpleFoam"; exit 1; }
+check "2 ranks: the solver took the cyclic pairs on each rank" \
+    "$(grep -c 'cyclic patches left and right: 40 face pairs' "$work/parallel/log.voidPimpleFoam" | awk '{print ($1 == 1)}')"
+check_mapped "$work/parallel" || fail=1
+resid=$(awk '!/^#/ && NF >= 9 {r = $9 < 0 ? -$9 : $9; if (r > m) m = r} END {print m + 0}' "$work/parallel/postProcessing/momentumBalance.dat")
+check "2 ranks: the gas momentum balance within 1 % at every step (largest relative residual $resid)" \
+    "$(awk -v r="$resid" 'BEGIN {print (r < 0.01)}')"
+make_case "$work/across"
+sed -i 's/^interpolation .*/interpolation cell;/' "$work/across/constant/couplingProperties"
+decompose "$work/across" "(2 1 1)"
+( cd "$work/across" && timeout 120 mpirun -np 2 "$solver" -parallel > log 2>&1 ); rc=$?
+check "2 ranks cut across the cyclic direction: stops (exit $rc) naming the cut and what to change" \
+    "$( [ $rc != 0 ] && [ $rc != 124 ] && grep -q "the decomposition cuts across a cyclic direction" "$work/across/log" && echo 1)"
 
 # mismatches: particles periodic without cyclic patches, and cyclic patches without periodic particles
 make_case "$work/mismatch"
