@@ -158,9 +158,9 @@ static void grid_init(grid *g, const dem_system *s, double dmax, long expected, 
 }
 
 /* The first particle j whose centre is closer to x than factor (radius + r_j), or -1. */
-static int find_overlap(const dem_system *s, const grid *g, const double x[3], double radius, double factor)
+static int find_overlap_in(const dem_system *s, const dem_particles *p, const grid *g, const double x[3], double radius,
+                           double factor)
 {
-    const dem_particles *p = &s->p;
     int c[3];
     grid_cell(g, x, c);
     for (int oz = -1; oz <= 1; oz++)
@@ -187,9 +187,21 @@ static int find_overlap(const dem_system *s, const grid *g, const double x[3], d
     return -1;
 }
 
+static int find_overlap(const dem_system *s, const grid *g, const double x[3], double radius, double factor)
+{
+    return find_overlap_in(s, &s->p, g, x, radius, factor);
+}
+
+static int overlaps_in(const dem_system *s, const dem_particles *p, const grid *g, const double x[3], double radius);
 static int overlaps(const dem_system *s, const grid *g, const double x[3], double radius)
 {
-    if (find_overlap(s, g, x, radius, 1.0) >= 0) return 1;
+    return overlaps_in(s, &s->p, g, x, radius);
+}
+
+/* x overlaps one of p's particles in the grid, a wall, or lies beyond a mirror */
+static int overlaps_in(const dem_system *s, const dem_particles *p, const grid *g, const double x[3], double radius)
+{
+    if (find_overlap_in(s, p, g, x, radius, 1.0) >= 0) return 1;
     for (int k = 0; k < s->nsymmetry; k++)   /* the centre on the particle side of a mirror */
         if (symmetry_distance(&s->symmetry_planes[k], x) < 0.0) return 1;
     for (int k = 0; k < s->nwalls; k++) {
@@ -201,32 +213,39 @@ static int overlaps(const dem_system *s, const grid *g, const double x[3], doubl
 
 struct dem_placement {
     grid g;
-    long capacity;   /* of g.next */
+    long capacity;              /* of g.next */
+    const dem_particles *p;     /* the particles placed against */
 };
 
-dem_placement *dem_placement_begin(const dem_system *s, double dmax, long extra)
+dem_placement *dem_placement_begin_on(const dem_system *s, const dem_particles *p, double dmax, long extra)
 {
-    const dem_particles *p = &s->p;
     for (int i = 0; i < p->n; i++) dmax = fmax(dmax, 2.0 * p->radius[i]);
     dem_placement *pl = dem_malloc(sizeof *pl);
     pl->capacity = p->n + extra + 16;
+    pl->p = p;
     grid_init(&pl->g, s, dmax, p->n + extra, pl->capacity);
     for (int i = 0; i < p->n; i++) grid_add(&pl->g, p, i);
     return pl;
 }
 
+dem_placement *dem_placement_begin(const dem_system *s, double dmax, long extra)
+{
+    return dem_placement_begin_on(s, &s->p, dmax, extra);
+}
+
 int dem_placement_free(const dem_placement *pl, const dem_system *s, const double x[3], double radius)
 {
-    return !overlaps(s, &pl->g, x, radius);
+    return !overlaps_in(s, pl->p, &pl->g, x, radius);
 }
 
 void dem_placement_add(dem_placement *pl, const dem_system *s, int i)
 {
+    (void)s;
     if (i >= pl->capacity) {
         pl->capacity = 2 * (long)i + 16;
         pl->g.next = dem_realloc(pl->g.next, (size_t)pl->capacity * sizeof(int));
     }
-    grid_add(&pl->g, &s->p, i);
+    grid_add(&pl->g, pl->p, i);
 }
 
 void dem_placement_end(dem_placement *pl)

@@ -83,6 +83,9 @@ void dem_insertion_draw_position(const dem_insertion *ins, double radius, dem_rn
  * `extra` more (it grows). */
 typedef struct dem_placement dem_placement;
 dem_placement *dem_placement_begin(const struct dem_system *s, double dmax, long extra);
+/* The same against the particles of p (not the system's own: a parallel stream places against
+ * the particles of every rank near its face, gathered; insert_stream.c) */
+dem_placement *dem_placement_begin_on(const struct dem_system *s, const dem_particles *p, double dmax, long extra);
 /* 1 if a sphere of `radius` at x overlaps no particle, wall or mirror */
 int dem_placement_free(const dem_placement *pl, const struct dem_system *s, const double x[3], double radius);
 /* particle i (just added) among those the next look-ups see */

@@ -5,8 +5,11 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "comm.h"
+#include "decompose.h"
 #include "error.h"
 #include "memory_budget.h"
+#include "reduce.h"
 #include "system.h"
 
 dem_stream *dem_streams_add(dem_system *s)
@@ -117,8 +120,11 @@ static double due_time(const dem_system *s, const dem_stream *st, long step)
 }
 
 /* One event of one stream; `pl` is the placement grid of all particles (shared by the streams
- * of the step). */
-static void stream_event(dem_system *s, dem_stream *st, long step, dem_placement *pl)
+ * of the step). In a parallel run `near` holds the particles of every rank near the due streams'
+ * faces (the same on every rank), `pl` is laid over them, and every rank draws and places alike:
+ * each new particle joins `near` everywhere and the system on the rank whose box holds it, with
+ * the same id at any rank count. */
+static void stream_event(dem_system *s, dem_stream *st, long step, dem_placement *pl, dem_particles *near)
 {
     dem_particles *p = &s->p;
     const double t_due = due_time(s, st, step);
@@ -153,13 +159,22 @@ static void stream_event(dem_system *s, dem_stream *st, long step, dem_placement
         double v[3];
         for (int q = 0; q < 3; q++)
             v[q] = st->ins.velocity[q] + (st->velocity_std > 0.0 ? st->velocity_std * rng_normal(&st->rng) : 0.0);
-        const int i = dem_particles_add(p, x, v, r, density, st->ins.material, s->next_id++);
-        for (int q = 0; q < 3; q++) p->f[i][q] = p->mass[i] * s->gravity[q];   /* the step's forces so far */
-        if (st->ins.prescribed) dem_particles_prescribe(p, i);
-        dem_placement_add(pl, s, i);
-        const dem_mass_quanta m = dem_mass_to_quanta(p->mass[i]);
-        dem_tally_add(&st->inserted, 1, m);
-        dem_tally_add(&s->inserted, 1, m);
+        const int64_t id = s->next_id++;
+        double mass;
+        if (near) {   /* every rank: among the particles the next draws are placed against */
+            const int k = dem_particles_add(near, x, v, r, density, st->ins.material, id);
+            dem_placement_add(pl, s, k);
+            mass = near->mass[k];
+        }
+        if (!near || dem_decomposition_owner(&s->decomp, x) == dem_comm_rank()) {
+            const int i = dem_particles_add(p, x, v, r, density, st->ins.material, id);
+            for (int q = 0; q < 3; q++) p->f[i][q] = p->mass[i] * s->gravity[q];   /* the step's forces so far */
+            if (st->ins.prescribed) dem_particles_prescribe(p, i);
+            if (!near) dem_placement_add(pl, s, i);
+            mass = p->mass[i];
+            dem_tally_add(&s->inserted, 1, dem_mass_to_quanta(mass));   /* this rank's: summed over the ranks */
+        }
+        dem_tally_add(&st->inserted, 1, dem_mass_to_quanta(mass));      /* the stream's: the same on every rank */
     }
     /* the particles carried for the first time: what is behind now beyond what was behind before
      * (those are placed first); a mass rate's in particles of the mean mass */
@@ -170,8 +185,98 @@ static void stream_event(dem_system *s, dem_stream *st, long step, dem_placement
     if (stuck && st->behind_count > was_behind) st->carried_total += st->behind_count - was_behind;
 }
 
+/* Where a stream's centres may fall, widened by dmax (what a particle there may touch) [m]; the
+ * whole length along a periodic direction. */
+static void stream_zone(const dem_system *s, const dem_stream *st, double dmax, double lo[3], double hi[3])
+{
+    for (int d = 0; d < 3; d++) {
+        switch (st->shape) {
+        case STREAM_REGION:
+            lo[d] = st->ins.min[d];
+            hi[d] = st->ins.max[d];
+            if (st->ins.region == REGION_CYLINDER && d != st->ins.axis) {   /* the box around the cylinder */
+                const double c = st->ins.centre[d < st->ins.axis ? d : d - 1];
+                lo[d] = c - st->ins.radius;
+                hi[d] = c + st->ins.radius;
+            }
+            break;
+        case STREAM_DISC:
+            lo[d] = st->centre[d] - st->radius - st->depth - dmax;
+            hi[d] = st->centre[d] + st->radius + st->depth + dmax;
+            break;
+        case STREAM_RECTANGLE:
+            lo[d] = fmin(st->fmin[d], st->fmin[d] + st->normal[d] * (st->depth + dmax));
+            hi[d] = fmax(st->fmax[d], st->fmax[d] + st->normal[d] * (st->depth + dmax));
+            break;
+        }
+        lo[d] -= dmax;
+        hi[d] += dmax;
+        if (s->periodic[d]) { lo[d] = -INFINITY; hi[d] = INFINITY; }
+    }
+}
+
+/* Every rank's particles within the due streams' zones, in rank order, into `near` (the same on
+ * every rank): each rank sends its own to every other. */
+static void gather_near(dem_system *s, long step, double dmax, dem_particles *near)
+{
+    const int size = dem_comm_size(), me = dem_comm_rank();
+    const dem_particles *p = &s->p;
+    double (*zone)[6] = dem_malloc((size_t)(s->nstreams + 1) * sizeof *zone);
+    int nz = 0;
+    for (int k = 0; k < s->nstreams; k++)
+        if (event_at(&s->streams[k], step)) { stream_zone(s, &s->streams[k], dmax, zone[nz], zone[nz] + 3); nz++; }
+    double *mine = dem_malloc(((size_t)p->n * 4 + 1) * sizeof *mine);
+    int n = 0;
+    for (int i = 0; i < p->n; i++)
+        for (int z = 0; z < nz; z++) {
+            int in = 1;
+            for (int d = 0; d < 3; d++) in &= p->x[i][d] >= zone[z][d] && p->x[i][d] <= zone[z][3 + d];
+            if (!in) continue;
+            memcpy(mine + 4 * n, p->x[i], 3 * sizeof(double));
+            mine[4 * n + 3] = p->radius[i];
+            n++;
+            break;
+        }
+    int64_t *counts = dem_malloc(2 * (size_t)size * sizeof *counts);
+    for (int r = 0; r < size; r++) counts[r] = n;
+    dem_comm_counts(counts, counts + size);
+    size_t *b = dem_malloc(4 * (size_t)size * sizeof *b), total = 0;
+    for (int r = 0; r < size; r++) {
+        b[r] = r == me ? 0 : (size_t)n * 4 * sizeof(double);             /* to each: all of mine */
+        b[size + r] = 0;
+        b[2 * size + r] = r == me ? 0 : (size_t)counts[size + r] * 4 * sizeof(double);
+        b[3 * size + r] = total * 4 * sizeof(double);
+        total += r == me ? (size_t)n : (size_t)counts[size + r];
+    }
+    double *all = dem_malloc((total * 4 + 1) * sizeof *all);
+    memcpy((char *)all + b[3 * size + me], mine, (size_t)n * 4 * sizeof(double));
+    dem_comm_exchange(mine, b, b + size, all, b + 2 * size, b + 3 * size);
+    static const double still[3] = {0.0, 0.0, 0.0};
+    for (size_t k = 0; k < total; k++) dem_particles_add(near, all + 4 * k, still, all[4 * k + 3], 1.0, 0, -1);
+    free(all); free(b); free(counts); free(mine); free(zone);
+}
+
 void dem_streams_insert(dem_system *s, long step)
 {
+    if (dem_comm_size() > 1) {   /* every rank alike, against the particles of all ranks near the faces */
+        int due = 0;
+        for (int k = 0; k < s->nstreams; k++) due |= event_at(&s->streams[k], step);
+        if (!due) return;
+        double dmin, dmax, rmax = 0.0;
+        dem_streams_diameters(s, -1, &dmin, &dmax);
+        for (int i = 0; i < s->p.n; i++) rmax = fmax(rmax, s->p.radius[i]);
+        dem_reduce_doubles(&rmax, 1, DEM_REDUCE_MAX);
+        dmax = fmax(dmax, 2.0 * rmax);
+        dem_particles near;
+        dem_particles_init(&near);
+        gather_near(s, step, dmax, &near);
+        dem_placement *pl = dem_placement_begin_on(s, &near, dmax, 1024);
+        for (int k = 0; k < s->nstreams; k++)
+            if (event_at(&s->streams[k], step)) stream_event(s, &s->streams[k], step, pl, &near);
+        dem_placement_end(pl);
+        dem_particles_free(&near);
+        return;
+    }
     dem_placement *pl = NULL;
     for (int k = 0; k < s->nstreams; k++) {
         dem_stream *st = &s->streams[k];
@@ -181,7 +286,7 @@ void dem_streams_insert(dem_system *s, long step)
             dem_streams_diameters(s, -1, &dmin, &dmax);
             pl = dem_placement_begin(s, dmax, 1024);
         }
-        stream_event(s, st, step, pl);
+        stream_event(s, st, step, pl, NULL);
     }
     dem_placement_end(pl);
 }

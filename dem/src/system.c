@@ -155,7 +155,7 @@ static void decompose(dem_system *s)
 {
     const int nranks = dem_comm_size();
     if (nranks > 1) {
-        const char *what = s->bodies.n ? "multisphere bodies" : s->nstreams ? "insertion streams (method stream)" : NULL;
+        const char *what = s->bodies.n ? "multisphere bodies" : NULL;
         if (what)
             dem_fatal("%s are not supported in a parallel run yet (%d ranks): run this case on one rank", what, nranks);
     }

@@ -11,7 +11,9 @@
 #     key, and a non-zero exit status;
 #  5. an outlet (a drain under the pour, acting every 1 ms, to 0.08 s) on 1, 2 and 4 ranks, and on 2
 #     ranks restarted on 1 at 0.04 s: the same particles removed (count and mass exact, the same ids
-#     left) and the mass balance exact in every log.
+#     left) and the mass balance exact in every log;
+#  6. a stream (lifecycle.demProperties' feed pipe, 0.06 s) on 1, 2 and 4 ranks: the same ids at the
+#     same places (1e-12 m) at every write, and the mass balance exact in every log.
 # The largest difference in position from the serial run is printed (the runs differ only in the
 # order of force sums, which a pour amplifies).
 # Usage: check_parallel_bed.sh <demRun> <mpiexec>
@@ -42,6 +44,16 @@ cp "$work/log" "$work/drainR.log"
 for c in drain1 drain2 drain4 drainR; do
     grep "mass balance at t = 0.08 s" "$work/$c.log" | sed "s/^/  $c: /"
     grep -q "mass balance at t = 0.08 s:.*(exact)" "$work/$c.log" || { echo "CHECK $c: the mass balance closes exactly FAIL"; exit 1; }
+done
+
+# a stream (tests/input/lifecycle.demProperties: beads fed through a disc, colliding in a tube) on
+# 1, 2 and 4 ranks: every rank draws and places alike against the particles of all ranks near the
+# face, and keeps what its box holds
+for np in 1 2 4; do
+    mkdir -p "$work/feed$np/constant"
+    sed -e "s/^endTime        0.2;/endTime        0.06;/" "$here/lifecycle.demProperties" > "$work/feed$np/constant/demProperties"
+    run $np "$work/feed$np"; cp "$work/log" "$work/feed$np.log"
+    grep -q "mass balance at t = 0.06 s:.*(exact)" "$work/feed$np.log" || { echo "CHECK feed$np: the mass balance closes exactly FAIL"; exit 1; }
 done
 
 make_case "$work/bad" 0.25
@@ -102,5 +114,22 @@ for case, what in [("drain2", "2 ranks"), ("drain4", "4 ranks"), ("drainR", "2 r
     t, ids, bal = left(case)
     check(f"outlet, {what}: {N - len(ids)} removed by t = {t:g} s as serially ({N - len(ids0)}), the same ids left, "
           f"the same counts and mass", t == t0 and np.array_equal(ids, ids0) and np.array_equal(bal, bal0))
+# the stream: at every write the same ids at the same places on 2 and 4 ranks as on 1 (1e-12 m:
+# only the order of force sums may differ)
+def snaps(case):
+    with h5py.File(f"{work}/{case}/particles.h5", "r") as f:
+        out = []
+        for k in sorted(f["snapshots"]):
+            s = f["snapshots"][k]
+            order = np.argsort(s["id"][:])
+            out.append((float(s.attrs["time"]), s["id"][:][order], s["position"][:][order]))
+        return out
+feed1 = snaps("feed1")
+for case, what in [("feed2", "2 ranks"), ("feed4", "4 ranks")]:
+    other = snaps(case)
+    same = len(other) == len(feed1) and all(t == u and np.array_equal(i, j) for (t, i, _), (u, j, _) in zip(feed1, other))
+    dx = max(np.abs(x - y).max() if len(x) else 0.0 for (_, _, x), (_, _, y) in zip(feed1, other)) if same else float("inf")
+    check(f"stream, {what}: {len(feed1[-1][1])} beads fed by t = {feed1[-1][0]:.3g} s, the same ids at every write as serially, "
+          f"positions within 1e-12 m (largest {dx:.3g} m)", same and dx <= 1e-12)
 sys.exit(1 if failed else 0)
 PY
