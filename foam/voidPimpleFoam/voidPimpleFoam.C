@@ -92,7 +92,10 @@ Description
       constant/drivingGradient       optional: a periodic pipe's driving gradient, holding the
                                      mean superficial or interstitial velocity (drivingGradient.H)
 
-    Serial only (the C layer holds the whole mesh and all particles).
+    Serial, or parallel after decomposePar: mpirun -np N voidPimpleFoam -parallel (each rank's
+    cells go to the C side, the DEM is decomposed over the same ranks, and each particle's
+    copies go to the ranks whose cells it reaches; coupling/src/proxies.h). The tutorials'
+    Allrun -np N decompose, run and reconstruct.
 
     The equations of models A and B, numbered, with their sources and choices:
     docs/models/forces_modelA_B.md (the exchange: docs/models/exchange_implicit_explicit.md).
