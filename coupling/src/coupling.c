@@ -80,6 +80,7 @@ struct coupling {
     double (*copy_x)[3], *copy_r, *copy_volume;
     int *copy_cell;                /* the cell of the copy's centre among this rank's (-1: not here) */
     double *copy_z, *copy_norm, *copy_found;
+    double *copy_alpha, (*copy_u)[3], (*copy_gp)[3];   /* each copy's share of alpha, U, grad p */
     double *copy_beta, (*copy_f)[3], (*copy_v)[3];
     double *copy_buf, *particle_buf;   /* the moves' rows: [copies][8], [particles][8] */
     double *reach;                 /* [particles] how far from its centre a particle's volume may fall [m] */
@@ -181,6 +182,9 @@ static void grow_copies(coupling *c, int n)
     c->copy_norm = dem_realloc(c->copy_norm, cap * sizeof *c->copy_norm);
     c->copy_found = dem_realloc(c->copy_found, cap * sizeof *c->copy_found);
     c->copy_beta = dem_realloc(c->copy_beta, cap * sizeof *c->copy_beta);
+    c->copy_alpha = dem_realloc(c->copy_alpha, cap * sizeof *c->copy_alpha);
+    c->copy_u = dem_realloc(c->copy_u, cap * sizeof *c->copy_u);
+    c->copy_gp = dem_realloc(c->copy_gp, cap * sizeof *c->copy_gp);
     c->copy_f = dem_realloc(c->copy_f, cap * sizeof *c->copy_f);
     c->copy_v = dem_realloc(c->copy_v, cap * sizeof *c->copy_v);
     c->copy_buf = dem_realloc(c->copy_buf, cap * 8 * sizeof *c->copy_buf);
@@ -286,18 +290,11 @@ static void evaluate_forces(coupling *c, const double (*U)[3], const double (*gr
     const int n = c->pr.n;
     double *out = c->copy_buf;
     const cpl_cell_weights w = weights_of(c);
-    for (int k = 0; k < n; k++) {
-        double s7[7] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-        for (int j = w.start[k]; j < w.start[k + 1]; j++) {
-            const double wj = w.weight[j];
-            const int cj = w.cell[j];
-            s7[0] += wj * c->vf.alpha[cj];
-            if (c->interp_scheme == CPL_INTERP_CELL)
-                for (int q = 0; q < 3; q++) { s7[1 + q] += wj * U[cj][q]; s7[4 + q] += wj * grad_p[cj][q]; }
-        }
-        memcpy(out + (size_t)k * 7, s7, sizeof s7);
-    }
-    if (c->interp_scheme != CPL_INTERP_CELL) {
+    cpl_gather_scalar(&w, c->vf.alpha, c->copy_alpha);
+    if (c->interp_scheme == CPL_INTERP_CELL) {   /* the spreading weights: exact balance */
+        cpl_gather_vector(&w, U, c->copy_u);
+        cpl_gather_vector(&w, grad_p, c->copy_gp);
+    } else {
         if (new_field || !c->field_set) {
             for (int k = 0; k < c->mesh.ncells; k++)
                 for (int q = 0; q < 3; q++) { c->ugp[k][q] = U[k][q]; c->ugp[k][3 + q] = grad_p[k][q]; }
@@ -314,7 +311,12 @@ static void evaluate_forces(coupling *c, const double (*U)[3], const double (*gr
             cpl_interp_particles(&c->interp, &c->mesh, n, c->copy_cell, (const double (*)[3])c->copy_x, &c->ugp_p[0][0]);
         }
         for (int k = 0; k < n; k++)
-            for (int q = 0; q < 6; q++) out[(size_t)k * 7 + 1 + q] = c->ugp_p[k][q];
+            for (int q = 0; q < 3; q++) { c->copy_u[k][q] = c->ugp_p[k][q]; c->copy_gp[k][q] = c->ugp_p[k][3 + q]; }
+    }
+    for (int k = 0; k < n; k++) {
+        double *o = out + (size_t)k * 7;
+        o[0] = c->copy_alpha[k];
+        for (int q = 0; q < 3; q++) { o[1 + q] = c->copy_u[k][q]; o[4 + q] = c->copy_gp[k][q]; }
     }
     double *row = c->particle_buf;
     cpl_proxies_reverse(&c->pr, 7, out, row, p->n, CPL_PROXY_SUM);
@@ -797,6 +799,7 @@ void coupling_free(coupling *c)
     cpl_proxies_free(&c->pr);
     free(c->copy_x); free(c->copy_r); free(c->copy_volume); free(c->copy_cell); free(c->copy_z);
     free(c->copy_norm); free(c->copy_found); free(c->copy_beta); free(c->copy_f); free(c->copy_v);
+    free(c->copy_alpha); free(c->copy_u); free(c->copy_gp);
     free(c->copy_buf); free(c->particle_buf); free(c->reach);
     free(c->d); free(c->volume); free(c->alpha_p); free(c->u_p); free(c->gp_p);
     free(c->ksl); free(c->up); free(c->source);

@@ -13,6 +13,17 @@ add_executable(test_reduce ${CMAKE_CURRENT_SOURCE_DIR}/unit/test_reduce.c)
 target_include_directories(test_reduce PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/validation)
 target_link_libraries(test_reduce dem)
 add_test(NAME reduce_hook COMMAND test_reduce)
+# add_mpi_tests(<name> <target> <rank counts...>): <name>_<n> runs <target> under mpirun -np <n>
+# (oversubscribed beyond the cores; mpirun as root, as in CI and on these machines, needs the two
+# variables: ../shared/docs/openfoam-mpi-hdf5-on-debian.md)
+function(add_mpi_tests name target)
+  foreach(np ${ARGN})
+    add_test(NAME ${name}_${np}
+             COMMAND ${MPIEXEC_EXECUTABLE} ${MPIEXEC_NUMPROC_FLAG} ${np} --oversubscribe $<TARGET_FILE:${target}>)
+    set_tests_properties(${name}_${np} PROPERTIES
+                         ENVIRONMENT "OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1")
+  endforeach()
+endfunction()
 # The spatial decomposition (dem/src/decompose.h): recursive bisection, serially and on 2 and 4
 # ranks (4 oversubscribed on 2 cores), where every rank must get the serial tree bit for bit.
 add_executable(test_decompose ${CMAKE_CURRENT_SOURCE_DIR}/unit/test_decompose.c)
@@ -23,33 +34,17 @@ add_executable(test_decompose_mpi ${CMAKE_CURRENT_SOURCE_DIR}/mpi/test_decompose
 target_include_directories(test_decompose_mpi PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/validation
                            ${CMAKE_CURRENT_SOURCE_DIR}/unit)
 target_link_libraries(test_decompose_mpi dem_mpi)
-foreach(np 2 4)
-  add_test(NAME decompose_mpi_${np}
-           COMMAND ${MPIEXEC_EXECUTABLE} ${MPIEXEC_NUMPROC_FLAG} ${np} --oversubscribe $<TARGET_FILE:test_decompose_mpi>)
-  # mpirun as root (CI and these machines): ../shared/docs/openfoam-mpi-hdf5-on-debian.md
-  set_tests_properties(decompose_mpi_${np} PROPERTIES
-                       ENVIRONMENT "OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1")
-endforeach()
+add_mpi_tests(decompose_mpi test_decompose_mpi 2 4)
 # The DEM on 1, 2 and 4 ranks (halo, migration with contact history): the bed of the serial run to
 # 1e-12 m after 100 steps, no particle lost or duplicated at any step.
 add_executable(test_dem_parallel ${CMAKE_CURRENT_SOURCE_DIR}/mpi/test_dem_parallel.c)
 target_include_directories(test_dem_parallel PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/validation)
 target_link_libraries(test_dem_parallel dem_mpi)
-foreach(np 1 2 4)
-  add_test(NAME dem_parallel_${np}
-           COMMAND ${MPIEXEC_EXECUTABLE} ${MPIEXEC_NUMPROC_FLAG} ${np} --oversubscribe $<TARGET_FILE:test_dem_parallel>)
-  set_tests_properties(dem_parallel_${np} PROPERTIES
-                       ENVIRONMENT "OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1")
-endforeach()
+add_mpi_tests(dem_parallel test_dem_parallel 1 2 4)
 # The coupling's copies on the fluid's ranks (issue 23): a mesh cut into slabs, one per rank, and
 # particles owned by ranks unrelated to where they are; the void fraction (divided: spheres
 # straddling the cuts; centre), the gather and the spreading equal the whole mesh's to 1e-12.
 add_executable(test_coupling_parallel ${CMAKE_CURRENT_SOURCE_DIR}/mpi/test_coupling_parallel.c)
 target_include_directories(test_coupling_parallel PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/validation)
 target_link_libraries(test_coupling_parallel coupling dem_mpi)
-foreach(np 1 2 4)
-  add_test(NAME coupling_parallel_${np}
-           COMMAND ${MPIEXEC_EXECUTABLE} ${MPIEXEC_NUMPROC_FLAG} ${np} --oversubscribe $<TARGET_FILE:test_coupling_parallel>)
-  set_tests_properties(coupling_parallel_${np} PROPERTIES
-                       ENVIRONMENT "OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1")
-endforeach()
+add_mpi_tests(coupling_parallel test_coupling_parallel 1 2 4)
