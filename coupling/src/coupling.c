@@ -559,8 +559,6 @@ static void refuse_in_parallel(const coupling *c, enum cpl_vf_model vf_model)
     if (c->interp_scheme != CPL_INTERP_CELL)
         dem_fatal_at(path, "interpolation %s runs in one process only, not yet with -parallel (it needs the cells "
                      "across processor patches): use interpolation cell, or run serially", interp_names_of(c->interp_scheme));
-    if (c->s.bodies.n)
-        dem_fatal("coupling: multisphere bodies run in one process only, not yet with -parallel");
 }
 
 int coupling_case_gravity(const char *case_dir, double g[3]) { return dem_case_gravity(case_dir, g); }

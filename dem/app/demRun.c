@@ -227,9 +227,11 @@ int main(int argc, char **argv)
     printf("neighbour list: %.2f pairs per particle (skin %g m)\n", all > 0 ? sum_ranks((double)s.nlist.npairs) / all : 0.0,
            s.nlist.skin);
     if (dem_comm_size() > 1) report_exchange(&s, total_steps, total_steps > 0 ? particle_steps / total_steps : all);
-    if (s.bodies.n)   /* each body's is in the snapshots */
-        printf("multisphere: %d bodies, rotational kinetic energy %.6g J (seed 004 eq. 8, summed over the bodies)\n",
-               s.bodies.n, dem_bodies_rotational_energy(&s));
+    const double bodies = s.bodies.ntemplates ? sum_ranks(s.bodies.n) : 0.0;
+    const double e_rot = s.bodies.ntemplates ? sum_ranks(dem_bodies_rotational_energy(&s)) : 0.0;
+    if (bodies > 0)   /* each body's is in the snapshots */
+        printf("multisphere: %.0f bodies, rotational kinetic energy %.6g J (seed 004 eq. 8, summed over the bodies)\n",
+               bodies, e_rot);
     dem_stage_report(&s, total_steps);
     dem_system_free(&s);
     if (mpi) {

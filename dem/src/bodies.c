@@ -375,6 +375,51 @@ void dem_bodies_remove(dem_system *s, const unsigned char *gone)
             dem_fatal("dem_bodies_remove: particle id %lld of a removed body is still there", (long long)p->id[i]);
 }
 
+enum { PACK_INTS = 2, PACK_DOUBLES = 19 };   /* id, template; x v (6) q (4) L_b f torque (9) */
+
+size_t dem_bodies_pack_size(void) { return PACK_INTS * sizeof(int64_t) + PACK_DOUBLES * sizeof(double); }
+
+size_t dem_bodies_pack(const dem_bodies *b, int k, void *buf)
+{
+    const int64_t ints[PACK_INTS] = {b->id[k], b->template_of[k]};
+    double reals[PACK_DOUBLES], *r = reals;
+    for (int d = 0; d < 3; d++) *r++ = b->x[k][d];
+    for (int d = 0; d < 3; d++) *r++ = b->v[k][d];
+    for (int d = 0; d < 4; d++) *r++ = b->q[k][d];
+    for (int d = 0; d < 3; d++) *r++ = b->Lb[k][d];
+    for (int d = 0; d < 3; d++) *r++ = b->f[k][d];
+    for (int d = 0; d < 3; d++) *r++ = b->torque[k][d];
+    memcpy(buf, ints, sizeof ints);
+    memcpy((unsigned char *)buf + sizeof ints, reals, sizeof reals);
+    return dem_bodies_pack_size();
+}
+
+void dem_bodies_unpack(dem_bodies *b, const void *buf)
+{
+    int64_t ints[PACK_INTS];
+    double reals[PACK_DOUBLES];
+    memcpy(ints, buf, sizeof ints);
+    memcpy(reals, (const unsigned char *)buf + sizeof ints, sizeof reals);
+    if (ints[1] < 0 || ints[1] >= b->ntemplates || ints[0] < 0 || ints[0] >= INT_MAX)
+        dem_fatal("a body arrived from another rank with id %lld and template %lld (%d templates here)",
+                  (long long)ints[0], (long long)ints[1], b->ntemplates);
+    if (ints[0] < b->index_capacity && b->index_of[ints[0]] >= 0)
+        dem_fatal("body id %lld arrived from another rank, but this rank holds it already", (long long)ints[0]);
+    const int k = append_body(b);
+    b->id[k] = ints[0];
+    b->template_of[k] = (int)ints[1];
+    set_index(b, b->id[k], k);
+    if (b->id[k] >= b->next_id) b->next_id = b->id[k] + 1;
+    const double *r = reals;
+    for (int d = 0; d < 3; d++) b->x[k][d] = *r++;
+    for (int d = 0; d < 3; d++) b->v[k][d] = *r++;
+    for (int d = 0; d < 4; d++) b->q[k][d] = *r++;
+    for (int d = 0; d < 3; d++) b->Lb[k][d] = *r++;
+    for (int d = 0; d < 3; d++) b->f[k][d] = *r++;
+    for (int d = 0; d < 3; d++) b->torque[k][d] = *r++;
+    update_frame(b, k);
+}
+
 double dem_particle_volume(const dem_system *s, int i)
 {
     const double r = s->p.radius[i], v = 4.0 / 3.0 * M_PI * r * r * r;

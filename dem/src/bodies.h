@@ -10,8 +10,14 @@
  *
  * A body's id is global and never reused; its index in the table below is local and changes as
  * bodies are removed. The spheres name their body by id (dem_body_index finds the index), so that
- * a sphere keeps its body when the table is renumbered, and when it moves to another process
- * (issue 23: a body is summed where its centre is).
+ * a sphere keeps its body when the table is renumbered, and when it moves to another process.
+ *
+ * In a parallel run (issue 23) a body and all its spheres belong to the rank whose box holds the
+ * body's centre (migrate.h sends them together, the body packed by dem_bodies_pack), so that the
+ * step's kick, drift and force sum stay local. A sphere may then lie outside its rank's box; the
+ * halo (ghosts.h) sends to each rank what lies within the cutoff of the spheres it holds, so a
+ * contact with another rank's particle is found where the rule of neighbour.c wants it. The
+ * forces other ranks compute on a sphere's ghost come back with the halo's fold before the sum.
  *
  * Each sphere carries the body's mass (so a contact's effective mass m* and the time-step check
  * see the body: LIGGGHTS' fix multisphere does the same) and moves with the body: after each
@@ -88,6 +94,15 @@ int dem_bodies_add_template(dem_bodies *b, const char *name, int n, const double
  * (space frame); its spheres are appended to the particles. Returns the body's index. */
 int dem_bodies_add(struct dem_system *s, int t, const double x[3], const double q_frame[4], const double v[3],
                    const double w[3]);
+
+/* A body as migration sends it (migrate.h): id, template, centre, velocity, orientation, angular
+ * momentum, force and torque (bytes: dem_bodies_pack_size()); R and omega are made again from them
+ * on arrival, as every step makes them. */
+size_t dem_bodies_pack_size(void);
+size_t dem_bodies_pack(const dem_bodies *b, int k, void *buf);
+void dem_bodies_unpack(dem_bodies *b, const void *buf);
+/* Body k's centre of mass [m] */
+static inline const double *dem_body_centre(const dem_bodies *b, int k) { return b->x[k]; }
 
 /* Remove the bodies k with gone[k] (their spheres must have been removed from the particles
  * already: lifecycle.h removes a body as one unit); the last body takes a removed one's index

@@ -5,6 +5,7 @@
 
 #include "comm.h"
 #include "error.h"
+#include "reduce.h"
 #include "system.h"
 
 enum { IMAGES = 27, SELF_IMAGE = 13 };   /* image 13: no period added */
@@ -85,8 +86,55 @@ static double distance2(const double lo[3], const double hi[3], const double y[3
     return d2;
 }
 
-/* Which (rank, image) each real particle goes to, as (key = rank * 27 + image, index) picks. */
-static long pick(dem_system *s, double cutoff, double (*lo)[3], double (*hi)[3])
+/* The squared gap between two boxes (0 when they touch or overlap) */
+static double gap2(const double alo[3], const double ahi[3], const double blo[3], const double bhi[3])
+{
+    double d2 = 0.0;
+    for (int k = 0; k < 3; k++) {
+        const double e = fmax(0.0, fmax(blo[k] - ahi[k], alo[k] - bhi[k]));
+        d2 += e * e;
+    }
+    return d2;
+}
+
+/* With multisphere bodies a rank holds its bodies' spheres wherever they lie (bodies.h), some
+ * outside its box: each rank's box grows to hold its bodies' spheres (every rank's bounds through
+ * one reduction), so that a particle within the cutoff of such a sphere is sent to its rank.
+ * Returns the other ranks whose boxes grew (malloc'd, *n of them). */
+static int *grow_to_bodies(const dem_system *s, double (*lo)[3], double (*hi)[3], int *n)
+{
+    const int nparts = s->decomp.nparts, me = dem_comm_rank();
+    double *bounds = dem_malloc((size_t)(6 * nparts) * sizeof(double));   /* per rank: -lo, hi */
+    for (int k = 0; k < 6 * nparts; k++) bounds[k] = -INFINITY;
+    double *mine = bounds + 6 * me;
+    for (int i = 0; i < s->p.n; i++)
+        if (s->p.body[i])
+            for (int d = 0; d < 3; d++) {
+                mine[d] = fmax(mine[d], -s->p.x[i][d]);
+                mine[3 + d] = fmax(mine[3 + d], s->p.x[i][d]);
+            }
+    dem_reduce_doubles(bounds, 6 * nparts, DEM_REDUCE_MAX);
+    int *intruders = dem_malloc((size_t)nparts * sizeof(int));
+    *n = 0;
+    for (int b = 0; b < nparts; b++) {
+        int grew = 0;
+        for (int d = 0; d < 3; d++) {
+            grew |= -bounds[6 * b + d] < lo[b][d] || bounds[6 * b + 3 + d] > hi[b][d];
+            lo[b][d] = fmin(lo[b][d], -bounds[6 * b + d]);
+            hi[b][d] = fmax(hi[b][d], bounds[6 * b + 3 + d]);
+        }
+        if (grew && b != me) intruders[(*n)++] = b;
+    }
+    free(bounds);
+    return intruders;
+}
+
+/* Which (rank, image) each real particle goes to, as (key = rank * 27 + image, index) picks. lo, hi:
+ * each rank's box as the halo sees it; own_lo, own_hi: this rank's box before it grew to its
+ * bodies. A particle deeper than the cutoff in its own box goes only to the ranks whose boxes
+ * grew into it (the intruders: none without bodies). */
+static long pick(dem_system *s, double cutoff, double (*lo)[3], double (*hi)[3], const double own_lo[3],
+                 const double own_hi[3], const int *intruders, int nintruders)
 {
     dem_ghost_list *g = &s->ghosts;
     const dem_particles *p = &s->p;
@@ -95,10 +143,15 @@ static long pick(dem_system *s, double cutoff, double (*lo)[3], double (*hi)[3])
     long npick = 0;
     for (int i = 0; i < p->n; i++) {
         const double *x = p->x[i];
-        /* most particles are deeper than the cutoff in this rank's box: nothing to send */
-        if (x[0] - lo[me][0] >= cutoff && hi[me][0] - x[0] > cutoff && x[1] - lo[me][1] >= cutoff &&
-            hi[me][1] - x[1] > cutoff && x[2] - lo[me][2] >= cutoff && hi[me][2] - x[2] > cutoff)
+        /* most particles are deeper than the cutoff in this rank's box: nothing to send, but to a
+         * rank whose bodies reach in */
+        if (x[0] - own_lo[0] >= cutoff && own_hi[0] - x[0] > cutoff && x[1] - own_lo[1] >= cutoff &&
+            own_hi[1] - x[1] > cutoff && x[2] - own_lo[2] >= cutoff && own_hi[2] - x[2] > cutoff) {
+            for (int k = 0; k < nintruders; k++)
+                if (distance2(lo[intruders[k]], hi[intruders[k]], x) < c2)
+                    push_pick(g, &npick, intruders[k] * IMAGES + SELF_IMAGE, i);
             continue;
+        }
         int from[3], to[3];   /* the periods to add in each direction */
         for (int k = 0; k < 3; k++) {
             from[k] = to[k] = 0;
@@ -225,7 +278,18 @@ void dem_ghosts_build(dem_system *s, double cutoff)
     size_rank_arrays(g, nr);
     double (*lo)[3] = dem_malloc((size_t)nparts * sizeof *lo), (*hi)[3] = dem_malloc((size_t)nparts * sizeof *hi);
     for (int b = 0; b < nparts; b++) halo_box(s, b, lo[b], hi[b]);
-    make_swaps(s, pick(s, cutoff, lo, hi));
+    const int me = dem_comm_rank();
+    const double own_lo[3] = {lo[me][0], lo[me][1], lo[me][2]}, own_hi[3] = {hi[me][0], hi[me][1], hi[me][2]};
+    int nintruders = 0, *intruders = NULL;
+    if (s->bodies.ntemplates && nparts > 1) {   /* the same on every rank: the case's templates */
+        intruders = grow_to_bodies(s, lo, hi, &nintruders);
+        int kept = 0;   /* those whose grown box comes within the cutoff of this rank's own box */
+        for (int k = 0; k < nintruders; k++)
+            if (gap2(lo[intruders[k]], hi[intruders[k]], own_lo, own_hi) < cutoff * cutoff) intruders[kept++] = intruders[k];
+        nintruders = kept;
+    }
+    make_swaps(s, pick(s, cutoff, lo, hi, own_lo, own_hi, intruders, nintruders));
+    free(intruders);
     free(lo);
     free(hi);
     for (int r = 0; r < nr; r++) g->count_out[r] = g->send_count[r];

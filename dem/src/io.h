@@ -30,7 +30,8 @@ typedef struct dem_particle_writer dem_particle_writer;
  * frame), omega [rad/s], force [N], torque [N m] (about the centre of mass), rotational_energy [J]
  * (seed 004 eq. 8). A restart rebuilds the bodies from it; their spheres are particles. */
 typedef struct dem_body_state {
-    long count;
+    int present;                 /* the snapshot has bodies (on any rank: a parallel write is collective) */
+    long count;                  /* the bodies here (written: this rank's; read: all the snapshot's) */
     int64_t *id, *template_of;
     double *x, *v, *q, *Lb, *omega, *f, *torque, *e_rot;   /* 3 per body; q 4; e_rot 1 */
 } dem_body_state;

@@ -572,11 +572,11 @@ static void write_contacts(hid_t g, const dem_contact_state *cs, const char *pat
 static void write_bodies(hid_t g, const dem_body_state *b, const char *path)
 {
     hid_t c = chk(H5Gcreate2(g, "bodies", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), path, "cannot create bodies group");
-    write_matrix(c, "id", H5T_STD_I64LE, H5T_NATIVE_INT64, b->id, b->count, 1, 0, path);
-    write_matrix(c, "template", H5T_STD_I64LE, H5T_NATIVE_INT64, b->template_of, b->count, 1, 0, path);
+    write_matrix(c, "id", H5T_STD_I64LE, H5T_NATIVE_INT64, b->id, b->count, 1, 1, path);
+    write_matrix(c, "template", H5T_STD_I64LE, H5T_NATIVE_INT64, b->template_of, b->count, 1, 1, path);
 #define WRITE_BODY_COLUMN(name, units, cols, data)                                                  \
     {                                                                                               \
-        write_matrix(c, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, data, b->count, cols, 0, path);    \
+        write_matrix(c, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, data, b->count, cols, 1, path);    \
         hid_t d = chk(H5Dopen2(c, name, H5P_DEFAULT), path, "cannot open dataset");                 \
         write_string_attr(d, "units", units, path);                                                 \
         H5Dclose(d);                                                                                \
@@ -623,7 +623,7 @@ void dem_io_write_snapshot_contacts(dem_particle_writer *w, const dem_particles 
         if (dem_particle_fields[k].flags & (PF_WRITE | PF_RESTART))
             write_field(g, &dem_particle_fields[k], p, p->n, offset, n, path);
     if (cs && cs->history_size > 0) write_contacts(g, cs, path);   /* the models' size: alike on every rank */
-    if (cs && cs->bodies.count > 0) write_bodies(g, &cs->bodies, path);
+    if (cs && cs->bodies.present) write_bodies(g, &cs->bodies, path);   /* each rank its own bodies' rows */
     if (cs && cs->lifecycle.present) write_lifecycle(g, &cs->lifecycle, path);
     if (cs && cs->coarse_graining > 1.0)   /* the diameters written are the parcels' */
         write_scalar_attr(g, "coarse_graining", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &cs->coarse_graining, path);
@@ -761,6 +761,7 @@ static void read_bodies(hid_t g, dem_body_state *b, const char *path)
     memset(b, 0, sizeof *b);
     if (!chk(H5Lexists(g, "bodies", H5P_DEFAULT), path, "cannot query bodies group")) return;
     hid_t c = chk(H5Gopen2(g, "bodies", H5P_DEFAULT), path, "cannot open bodies group");
+    b->present = 1;
     int64_t rows;
     b->id = read_matrix(c, "id", H5T_NATIVE_INT64, sizeof(int64_t), 1, &rows, path);
     b->count = (long)rows;

@@ -15,21 +15,43 @@ static void remove_leaving(dem_particles *p, const int *dest, int n, int me)
         if (dest[i] != me) dem_particles_remove(p, i);
 }
 
-/* The rank whose box owns each particle, by its position wrapped into the domain (malloc'd). */
-static int *owners(dem_system *s)
+/* The rank whose box owns each particle, by its position wrapped into the domain; a body's sphere
+ * goes with its body, to the rank whose box holds the body's centre (bodies.h). Both malloc'd;
+ * *body_dest is per body of the table. */
+static int *owners(dem_system *s, int **body_dest)
 {
     dem_neighbour_wrap(s);
+    const dem_bodies *b = &s->bodies;
+    int *bdest = dem_malloc((size_t)(b->n ? b->n : 1) * sizeof(int));
+    for (int k = 0; k < b->n; k++) bdest[k] = dem_decomposition_owner(&s->decomp, dem_body_centre(b, k));
     int *dest = dem_malloc((size_t)(s->p.n ? s->p.n : 1) * sizeof(int));
-    for (int i = 0; i < s->p.n; i++) dest[i] = dem_decomposition_owner(&s->decomp, s->p.x[i]);
+    for (int i = 0; i < s->p.n; i++)
+        dest[i] = s->p.body[i] ? bdest[dem_body_index(b, s->p.body[i])]
+                               : dem_decomposition_owner(&s->decomp, s->p.x[i]);
+    *body_dest = bdest;
     return dest;
+}
+
+/* The bodies whose destination is another rank leave the table (after their spheres left) */
+static void remove_leaving_bodies(dem_system *s, const int *body_dest, int me)
+{
+    dem_bodies *b = &s->bodies;
+    if (!b->n) return;
+    unsigned char *gone = dem_malloc((size_t)b->n);
+    int any = 0;
+    for (int k = 0; k < b->n; k++) any |= gone[k] = body_dest[k] != me;
+    if (any) dem_bodies_remove(s, gone);
+    free(gone);
 }
 
 void dem_migrate_keep_owned(dem_system *s)
 {
     if (dem_comm_size() == 1) return;
-    int *dest = owners(s);
+    int *body_dest, *dest = owners(s, &body_dest);
     remove_leaving(&s->p, dest, s->p.n, dem_comm_rank());
+    remove_leaving_bodies(s, body_dest, dem_comm_rank());
     free(dest);
+    free(body_dest);
 }
 
 /* The present index of each row of the contacts gathered at the last build (-1: the particle is
@@ -75,11 +97,14 @@ void dem_migrate(dem_system *s)
     dem_particles *p = &s->p;
     dem_contact_rows *cr = &s->carried;
     const int me = dem_comm_rank(), nr = dem_comm_size(), hs = s->history_size, n = p->n;
-    int *dest = owners(s);
+    int *body_dest, *dest = owners(s, &body_dest);
     int64_t *np_to = dem_calloc((size_t)nr, sizeof(int64_t)), *nc_to = dem_calloc((size_t)nr, sizeof(int64_t));
+    int64_t *nb_to = dem_calloc((size_t)nr, sizeof(int64_t));
     int64_t *bytes_to = dem_malloc((size_t)nr * sizeof(int64_t)), *bytes_from = dem_malloc((size_t)nr * sizeof(int64_t));
     for (int i = 0; i < n; i++)
         if (dest[i] != me) np_to[dest[i]]++;
+    for (int k = 0; k < s->bodies.n; k++)
+        if (body_dest[k] != me) nb_to[body_dest[k]]++;
     /* the contacts by row, gathered at the last build's indices: the pairs of row r and the wall
      * contacts whose partner is r go where the particle of row r goes */
     int *now = rows_now(p, cr);
@@ -89,12 +114,14 @@ void dem_migrate(dem_system *s)
         const int i = now[cr->partner_id[c]];
         if (i >= 0 && dest[i] != me) nc_to[dest[i]]++;
     }
-    const size_t ps = dem_particles_pack_size(), cs = 2 * sizeof(int64_t) + (size_t)hs * sizeof(double);
+    const size_t ps = dem_particles_pack_size(), cs = 2 * sizeof(int64_t) + (size_t)hs * sizeof(double),
+                 bs = dem_bodies_pack_size();
     size_t *send_bytes = dem_malloc((size_t)nr * sizeof(size_t)), *send_offset = dem_malloc((size_t)nr * sizeof(size_t));
     size_t *recv_bytes = dem_malloc((size_t)nr * sizeof(size_t)), *recv_offset = dem_malloc((size_t)nr * sizeof(size_t));
     size_t out = 0;
     for (int r = 0; r < nr; r++) {
-        send_bytes[r] = r == me ? 0 : 2 * sizeof(int64_t) + (size_t)np_to[r] * ps + (size_t)nc_to[r] * cs;
+        send_bytes[r] = r == me ? 0 : 3 * sizeof(int64_t) + (size_t)np_to[r] * ps + (size_t)nc_to[r] * cs
+                                          + (size_t)nb_to[r] * bs;
         send_offset[r] = out;
         out += send_bytes[r];
         bytes_to[r] = (int64_t)send_bytes[r];
@@ -108,14 +135,19 @@ void dem_migrate(dem_system *s)
     }
     unsigned char *send = dem_malloc(out + 1), *recv = dem_malloc(in + 1);
     unsigned char **part_at = dem_malloc((size_t)nr * sizeof *part_at), **contact_at = dem_malloc((size_t)nr * sizeof *contact_at);
+    unsigned char **body_at = dem_malloc((size_t)nr * sizeof *body_at);
     for (int r = 0; r < nr; r++) {
         if (r == me) continue;
         unsigned char *at = send + send_offset[r];
         put_i64(&at, np_to[r]);
         put_i64(&at, nc_to[r]);
+        put_i64(&at, nb_to[r]);
         part_at[r] = at;
         contact_at[r] = at + (size_t)np_to[r] * ps;
+        body_at[r] = contact_at[r] + (size_t)nc_to[r] * cs;
     }
+    for (int k = 0; k < s->bodies.n; k++)
+        if (body_dest[k] != me) body_at[body_dest[k]] += dem_bodies_pack(&s->bodies, k, body_at[body_dest[k]]);
     for (int i = 0; i < n; i++)
         if (dest[i] != me) part_at[dest[i]] += dem_particles_pack(p, i, part_at[dest[i]]);
     for (int row = 0; row < cr->rows; row++) {
@@ -142,11 +174,12 @@ void dem_migrate(dem_system *s)
         }
     dem_comm_exchange(send, send_bytes, send_offset, recv, recv_bytes, recv_offset);
     remove_leaving(p, dest, n, me);
+    remove_leaving_bodies(s, body_dest, me);
     double *h = dem_malloc((size_t)(hs ? hs : 1) * sizeof(double));
     for (int r = 0; r < nr; r++) {
         if (r == me || recv_bytes[r] == 0) continue;
         const unsigned char *at = recv + recv_offset[r];
-        const int64_t np = get_i64(&at), nc = get_i64(&at);
+        const int64_t np = get_i64(&at), nc = get_i64(&at), nb = get_i64(&at);
         for (int64_t k = 0; k < np; k++) {
             dem_particles_unpack(p, at);
             at += ps;
@@ -157,6 +190,10 @@ void dem_migrate(dem_system *s)
             at += (size_t)hs * sizeof(double);
             dem_contact_store_put(&cr->spill, first, second, h);
         }
+        for (int64_t k = 0; k < nb; k++) {
+            dem_bodies_unpack(&s->bodies, at);
+            at += bs;
+        }
     }
     free(h);
     free(now);
@@ -164,6 +201,7 @@ void dem_migrate(dem_system *s)
     free(recv);
     free(part_at);
     free(contact_at);
+    free(body_at);
     free(send_bytes);
     free(send_offset);
     free(recv_bytes);
@@ -172,5 +210,7 @@ void dem_migrate(dem_system *s)
     free(bytes_from);
     free(np_to);
     free(nc_to);
+    free(nb_to);
     free(dest);
+    free(body_dest);
 }

@@ -14,7 +14,12 @@ void dem_restart_save_contacts(const dem_system *s, dem_contact_state *cs)
     dem_contacts_gather(s, &store);
     dem_contacts_to_state(&store, s->nwalls, cs);
     dem_contact_store_free(&store);
-    if (s->bodies.n) dem_bodies_to_state(s, &cs->bodies);
+    int64_t bodies = s->bodies.n;   /* over all ranks: the snapshot's bodies group is written by all or none */
+    dem_reduce_int64s(&bodies, 1, DEM_REDUCE_SUM);
+    if (bodies > 0) {
+        dem_bodies_to_state(s, &cs->bodies);
+        cs->bodies.present = 1;
+    }
     dem_lifecycle_to_state(s, &cs->lifecycle);
     cs->coarse_graining = s->coarse_graining;
 }

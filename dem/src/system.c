@@ -154,11 +154,6 @@ static void prepare_models(dem_system *s)
 static void decompose(dem_system *s)
 {
     const int nranks = dem_comm_size();
-    if (nranks > 1) {
-        const char *what = s->bodies.n ? "multisphere bodies" : NULL;
-        if (what)
-            dem_fatal("%s are not supported in a parallel run yet (%d ranks): run this case on one rank", what, nranks);
-    }
     dem_decomposition_free(&s->decomp);
     dem_decompose_rcb(&s->decomp, nranks, s->domain_min, s->domain_max, s->p.n, (const dem_vec3 *)s->p.x, NULL);
     dem_migrate_keep_owned(s);

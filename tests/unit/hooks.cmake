@@ -41,6 +41,12 @@ add_executable(test_dem_parallel ${CMAKE_CURRENT_SOURCE_DIR}/mpi/test_dem_parall
 target_include_directories(test_dem_parallel PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/validation)
 target_link_libraries(test_dem_parallel dem_mpi)
 add_mpi_tests(dem_parallel test_dem_parallel 1 2 4)
+# Multisphere bodies on 1, 2 and 4 ranks (a body with its spheres on the rank of its centre): the
+# serial bed's bodies and spheres to 1e-12 m after 100 steps, none lost, doubled or parted.
+add_executable(test_bodies_parallel ${CMAKE_CURRENT_SOURCE_DIR}/mpi/test_bodies_parallel.c)
+target_include_directories(test_bodies_parallel PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/validation)
+target_link_libraries(test_bodies_parallel dem_mpi)
+add_mpi_tests(bodies_parallel test_bodies_parallel 1 2 4)
 # The coupling's copies on the fluid's ranks (issue 23): a mesh cut into slabs, one per rank, and
 # particles owned by ranks unrelated to where they are; the void fraction (divided: spheres
 # straddling the cuts; centre), the gather and the spreading equal the whole mesh's to 1e-12.
