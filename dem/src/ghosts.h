@@ -4,7 +4,9 @@
  * The rank's box is its part of the decomposition (decompose.h; the whole domain on one rank).
  * At each neighbour-list build, each real particle is sent to every (rank, periodic image) whose
  * box lies within the list's cutoff of the particle's image: its position plus -1, 0 or +1
- * periods in each periodic direction (the image 0 to this rank itself being the particle). What
+ * periods in each periodic direction (the image 0 to this rank itself being the particle). With
+ * multisphere bodies a rank's box first grows to the spheres it holds outside it (bodies.h: a
+ * body's spheres live on the rank of its centre), every rank's bounds through one reduction. What
  * goes to one rank is a swap: its send list (particle, shift) is fixed until the next build, in
  * the order of the images and, within one, of the particles. A swap packs its particles' PF_BORDER
  * fields (particles.h) with each one's shift added to its position at pack time; the receiver

@@ -6,7 +6,9 @@
  * (particles.h) and, with it, the contacts it holds: the pairs listed under it (a pair is held by
  * the particle with the lower id, neighbour.c) and its wall contacts, each with its history. The
  * receiver appends the particles and puts the contacts into the store the new lists take their
- * histories from by ids, so a contact survives a change of rank as it survives a sort. Between
+ * histories from by ids, so a contact survives a change of rank as it survives a sort. A
+ * multisphere body's spheres go by the body's centre, not their own, and the body's row
+ * (bodies.h's dem_bodies_pack) goes with them: a body is never split between ranks. Between
  * rebuilds no particle moves more than half the skin, so only the boxes around a rank send to it;
  * after a new decomposition any rank may. Serially (one rank) nothing is done. */
 #ifndef DEM_MIGRATE_H
