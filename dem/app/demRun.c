@@ -67,8 +67,8 @@ static void report_exchange(const dem_system *s, long steps, double all)
     dem_reduce_doubles(&sent[1], 1, DEM_REDUCE_MAX);
     const double per_step = steps > 0 ? sent[0] / size / steps : 0.0, most = steps > 0 ? sent[1] / steps : 0.0;
     const double allgather = all * (double)dem_particles_role_size(PF_FORWARD) * (size - 1) / size;
-    printf("decomposition: cut again %ld times as the load moved (each time the busiest rank had > 1.05 x the "
-           "mean compute time)\n", s->rebalances);
+    printf("decomposition: cut again %ld times as the load moved (each time the busiest rank had > %.2f x the "
+           "mean compute time)\n", s->rebalances, DEM_REBALANCE_ABOVE);
     printf("exchange on %d ranks: %.4g bytes sent per rank per step (mean; the most %.4g), against %.4g for an "
            "all-gather of every particle's position, velocity and spin (%.1f%% of it)\n",
            size, per_step, most, allgather, allgather > 0 ? 100.0 * per_step / allgather : 0.0);

@@ -6,6 +6,7 @@
 #include "ghosts.h"
 #include "neighbour.h"
 #include "reduce.h"
+#include "stage_timer.h"
 #include "system.h"
 
 void dem_neighbour_init(dem_neighbour_list *nl, double skin, int sort_interval, int history_size)
@@ -136,6 +137,7 @@ void dem_neighbour_rebuild(dem_system *s)
 {
     dem_neighbour_list *nl = &s->nlist;
     dem_particles *p = &s->p;
+    const double t_start = dem_clock();
     dem_neighbour_wrap(s);
     const double cutoff = list_cutoff(s);
     for (int d = 0; d < 3; d++)
@@ -148,7 +150,9 @@ void dem_neighbour_rebuild(dem_system *s)
         sort_by_cell(s);
         nl->sorts++;
     }
+    const double t_halo = dem_clock();
     dem_ghosts_build(s, cutoff);
+    const double t_search = dem_clock();
     const int total = p->n + s->ghosts.n;
     bin_particles(s, total, cutoff);
 
@@ -217,6 +221,7 @@ void dem_neighbour_rebuild(dem_system *s)
     }
     memcpy(nl->id_at_build, p->id, (size_t)total * sizeof(int64_t));
     nl->generation = p->generation;
+    nl->build_seconds += (t_halo - t_start) + (dem_clock() - t_search);
     nl->builds++;
     nl->schedule++;
 }

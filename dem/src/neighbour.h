@@ -33,6 +33,8 @@ typedef struct dem_neighbour_list {
     int64_t *id_at_build;
     int id_capacity;
     long builds, sorts;              /* since the start of the run */
+    double build_seconds;            /* the builds' own compute time (sorting, binning, the pair search;
+                                      * not the halo's messages), for a parallel run's load [s] */
     long schedule;                   /* builds since the sorting schedule began (a relist begins it again) */
     /* cells */
     int ncell[3];

@@ -63,30 +63,36 @@ static void check_step_motion(const dem_system *s)
     }
 }
 
-/* A parallel run's boxes cut again where the load is now, when the busiest rank has more than 5 %
- * above the mean (a bed that settles or bubbles moves its load); looked at every 10th list build.
- * The load is the measured compute time since the last look (the stages without messages:
- * integration, pair contacts, walls), shared out on each rank over its particles: a particle's
- * cost is the rank's integration and wall time per particle plus its pair time per listed pair
- * times the pairs it holds. So the cut follows where the time goes (a dense bed's touching pairs
+/* A parallel run's boxes cut again where the load is now, when the busiest rank has more than
+ * DEM_REBALANCE_ABOVE x the mean (a bed that settles or bubbles moves its load); looked at every
+ * DEM_REBALANCE_EVERY list builds (2 % and 5 since 2026-12-08: 5 % and 10 left the 50k scene's
+ * settling at 1.78x on 2 ranks, these give 1.83x, measured).
+ * The load is the measured compute time since the last look (what runs without messages:
+ * integration, the list builds' own work, pair contacts, walls), shared out on each rank over its
+ * particles: a particle's cost is the rank's integration, list and wall time per particle plus
+ * its pair time per listed pair times the pairs it holds. (The list builds count: in a settling
+ * bed the dilute rank lists more particles for fewer pairs, and left out they cost the 50k scene
+ * a rank waiting 3 s of 46 in the step's first reduction, measured.) So the cut follows where the time goes (a dense bed's touching pairs
  * cost more than a dilute region's listed ones), not only the counts. Migration then takes each
  * particle to its new owner. */
 static void rebalance(dem_system *s)
 {
-    if (s->nlist.builds % 10 != 0) return;
+    if (s->nlist.builds % DEM_REBALANCE_EVERY != 0) return;
     const int nranks = dem_comm_size(), n = s->p.n;
     const dem_neighbour_list *nl = &s->nlist;
     double *secs = s->stage_seconds, *last = s->stage_seconds_at_balance;
-    const double t_particles = secs[DEM_STAGE_INTEGRATE] - last[DEM_STAGE_INTEGRATE] + secs[DEM_STAGE_WALLS] - last[DEM_STAGE_WALLS];
+    const double t_particles = secs[DEM_STAGE_INTEGRATE] - last[DEM_STAGE_INTEGRATE] + secs[DEM_STAGE_WALLS] - last[DEM_STAGE_WALLS]
+                               + nl->build_seconds - s->build_seconds_at_balance;
     const double t_pairs = secs[DEM_STAGE_PAIRS] - last[DEM_STAGE_PAIRS];
     memcpy(last, secs, sizeof s->stage_seconds_at_balance);
+    s->build_seconds_at_balance = nl->build_seconds;
     dem_neighbour_wrap(s);
     double *cost = dem_malloc((size_t)(n ? n : 1) * sizeof *cost), *held = dem_malloc((size_t)nranks * sizeof *held);
     const double per_particle = n ? t_particles / n : 0.0, per_pair = nl->npairs ? t_pairs / (double)nl->npairs : 0.0;
     for (int i = 0; i < n; i++)   /* the lists are those of the last build: the same particles */
         cost[i] = per_particle + per_pair * (i < nl->rows && nl->id_at_build[i] == s->p.id[i] ? nl->start[i + 1] - nl->start[i] : 0);
     const double imbalance = dem_decomposition_imbalance(&s->decomp, n, (const dem_vec3 *)s->p.x, cost, held);
-    if (imbalance > 1.05) {
+    if (imbalance > DEM_REBALANCE_ABOVE) {
         dem_decomposition_free(&s->decomp);
         dem_decompose_rcb(&s->decomp, nranks, s->domain_min, s->domain_max, n, (const dem_vec3 *)s->p.x, cost);
         s->rebalances++;

@@ -17,6 +17,11 @@
 #include "symmetry.h"
 #include "walls.h"
 
+/* A parallel run cuts its boxes again when the busiest rank's load is above this x the mean,
+ * looked at every DEM_REBALANCE_EVERY list builds (system.c's rebalance) */
+#define DEM_REBALANCE_ABOVE 1.02
+enum { DEM_REBALANCE_EVERY = 5 };
+
 typedef struct dem_system {
     dem_particles p;
     dem_bodies bodies;                    /* multisphere bodies; their spheres are in p (bodies.h) */
@@ -39,8 +44,11 @@ typedef struct dem_system {
 
     dem_neighbour_list nlist;
     dem_decomposition decomp;             /* each rank's box (decompose.h): one part, the domain, serially */
-    long rebalances;                      /* new decompositions since set-up (a parallel run) */
+    long rebalances;                      /* new decompositions since set-up (a parallel run): when the
+                                           * busiest rank's load exceeds DEM_REBALANCE_ABOVE x the mean,
+                                           * looked at every DEM_REBALANCE_EVERY list builds (system.c) */
     double stage_seconds_at_balance[DEM_STAGE_COUNT];   /* stage_seconds when the load was last looked at */
+    double build_seconds_at_balance;      /* nlist.build_seconds then */
     dem_ghost_list ghosts;                /* periodic images and other ranks' particles, after the particles (ghosts.h) */
     dem_contact_rows carried;             /* the contacts' history across a rebuild (contacts.h) */
 
