@@ -29,13 +29,8 @@ make_case() {   # dir endTime
         -e "s/number   200;/number   2000;/" -e "s/value 2e-3;/value 1.5e-3;/" \
         "$here/base.demProperties" > "$1/constant/demProperties"
 }
-run() {   # ranks dir [args]
-    local np=$1; shift
-    if [ "$np" = 1 ]; then "$demRun" "$@" > "$work/log" 2>&1 || { cat "$work/log"; exit 1; }
-    else "$mpiexec" -np "$np" --oversubscribe "$demRun" "$@" > "$work/log" 2>&1 || { cat "$work/log"; exit 1; }
-    fi
-    grep -E "^(done|exchange|decomposition)" "$work/log" | sed "s|^|  $np rank(s), $(basename "$1"): |"
-}
+. "$here/run_ranks.sh"
+run() { run_ranks "$@"; }   # ranks dir [args]
 drain() { echo 'outlets { drain { type plane; point (0 0 0.004); normal (0 0 -1); interval 1e-3; } }' >> "$1/constant/demProperties"; }
 for np in 1 2 4; do make_case "$work/drain$np" 0.08; drain "$work/drain$np"; run $np "$work/drain$np"; cp "$work/log" "$work/drain$np.log"; done
 make_case "$work/drainR" 0.04; drain "$work/drainR"; run 2 "$work/drainR"

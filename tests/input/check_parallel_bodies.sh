@@ -15,7 +15,6 @@
 # Usage: check_parallel_bodies.sh <demRun> <mpiexec>
 demRun=$1
 mpiexec=${2:-mpirun}
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1   # ../shared/docs: mpirun as root
 here=$(cd "$(dirname "$0")" && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -24,13 +23,10 @@ make_case() {   # dir endTime
     sed -e "s/^endTime .*/endTime        $2;/" -e "s/^writeInterval .*/writeInterval  0.05;/" \
         "$here/base_multisphere.demProperties" > "$1/constant/demProperties"
 }
+. "$here/run_ranks.sh"
 run() {   # ranks dir [args]
-    local np=$1; shift
-    if [ "$np" = 1 ]; then "$demRun" "$@" > "$work/log" 2>&1 || { cat "$work/log"; exit 1; }
-    else "$mpiexec" -np "$np" --oversubscribe "$demRun" "$@" > "$work/log" 2>&1 || { cat "$work/log"; exit 1; }
-    fi
-    grep -q "multisphere: 300 bodies" "$work/log" || { echo "FAIL: $np rank(s), $(basename "$1"): not 300 bodies"; cat "$work/log"; exit 1; }
-    grep -E "^(done|exchange)" "$work/log" | sed "s|^|  $np rank(s), $(basename "$1"): |"
+    run_ranks "$@"
+    grep -q "multisphere: 300 bodies" "$work/log" || { echo "FAIL: $1 rank(s), $(basename "$2"): not 300 bodies"; cat "$work/log"; exit 1; }
 }
 for np in 1 2 4; do make_case "$work/straight$np" 0.3; run $np "$work/straight$np"; done
 make_case "$work/from4to1" 0.15; run 4 "$work/from4to1"

@@ -26,6 +26,7 @@
 #include "comm.h"
 #include "dem_mpi.h"
 #include "harness.h"
+#include "mpi_finish.h"
 
 enum { NX = 4, NY = 8, NZ = 8, NB = NX * NY * NZ, NS = 3 * NB, COMPARE = 1000 };
 static const double E = 5e6, NU = 0.3, RHO = 2500, RAD = 4e-4, L = 0.005;
@@ -221,10 +222,5 @@ int main(int argc, char **argv)
         printf("bytes sent to other ranks by rank 0: %.0f\n", dem_comm_bytes_sent());
     }
     dem_system_free(&par);
-    int failed = checks_failed;
-    MPI_Bcast(&failed, 1, MPI_INT, 0, MPI_COMM_WORLD);
-    dem_mpi_release();
-    if (rank == 0) finish("test_bodies_parallel");
-    MPI_Finalize();
-    return failed ? 1 : 0;
+    return mpi_finish("test_bodies_parallel");
 }

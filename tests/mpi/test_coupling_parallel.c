@@ -25,6 +25,7 @@
 #include "comm.h"
 #include "exchange.h"
 #include "harness.h"
+#include "mpi_finish.h"
 #include "mesh.h"
 #include "proxies.h"
 #include "voidfraction.h"
@@ -224,10 +225,5 @@ int main(int argc, char **argv)
     }
     run(CPL_VF_DIVIDED, rank, size);
     run(CPL_VF_CENTRE, rank, size);
-    int failed = checks_failed;
-    MPI_Bcast(&failed, 1, MPI_INT, 0, MPI_COMM_WORLD);
-    dem_mpi_release();
-    if (rank == 0) finish("test_coupling_parallel");
-    MPI_Finalize();
-    return failed ? 1 : 0;
+    return mpi_finish("test_coupling_parallel");
 }

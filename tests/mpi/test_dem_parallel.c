@@ -24,6 +24,7 @@
 #include "dem_mpi.h"
 #include "comm.h"
 #include "harness.h"
+#include "mpi_finish.h"
 
 enum { NX = 9, NY = 9, NZ = 8, N = NX * NY * NZ };
 static const double E = 5e6, NU = 0.3, RHO = 2500, RAD = 5e-4, L = 0.005;
@@ -170,10 +171,5 @@ int main(int argc, char **argv)
         printf("bytes sent to other ranks by rank 0: %.0f\n", dem_comm_bytes_sent());
     }
     dem_system_free(&par);
-    int failed = checks_failed;
-    MPI_Bcast(&failed, 1, MPI_INT, 0, MPI_COMM_WORLD);
-    dem_mpi_release();
-    if (rank == 0) finish("test_dem_parallel");
-    MPI_Finalize();
-    return failed ? 1 : 0;
+    return mpi_finish("test_dem_parallel");
 }
